@@ -1,0 +1,81 @@
+#pragma once
+// Small procedural meshes for unit tests, and the path of the bundled ones.
+#include "mesh.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+
+namespace fcvt::testing {
+
+inline std::string resource(const std::string& name) { return std::string(FCVT_RESOURCES_DIR) + "/" + name; }
+
+//! Planar grid over [0, size]^2 (z = 0), `cells` x `cells` squares split into two triangles.
+inline TriMesh planeGrid(int cells, double size = 1.0)
+{
+    TriMesh m;
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) m.vertices.emplace_back(size * i / cells, size * j / cells, 0.0);
+    auto id = [cells](int i, int j) { return j * (cells + 1) + i; };
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
+//! Torus with major radius R, minor radius r, n x m quads split into triangles (genus 1).
+inline TriMesh torus(int n, int m, double R = 1.0, double r = 0.35)
+{
+    TriMesh t;
+    const double pi = 3.14159265358979323846;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const double u = 2 * pi * i / n, v = 2 * pi * j / m;
+            t.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+        }
+    auto id = [n, m](int i, int j) { return ((i + n) % n) * m + (j + m) % m; };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            t.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            t.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return t;
+}
+
+//! Unit icosphere subdivided `levels` times (closed, genus 0, outward orientation).
+inline TriMesh icosphere(int levels)
+{
+    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+    TriMesh m;
+    m.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    m.faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+               {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+               {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (Vec3& v : m.vertices) v.normalize();
+    for (int l = 0; l < levels; ++l) {
+        std::map<std::pair<int, int>, int> mid;
+        auto midpoint = [&](int a, int b) {
+            auto key = std::minmax(a, b);
+            auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
+            return mid[key] = m.vertexCount() - 1;
+        };
+        std::vector<Face> faces;
+        for (const Face& f : m.faces) {
+            const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+            faces.push_back({f[0], ab, ca});
+            faces.push_back({f[1], bc, ab});
+            faces.push_back({f[2], ca, bc});
+            faces.push_back({ab, bc, ca});
+        }
+        m.faces = std::move(faces);
+    }
+    return m;
+}
+
+}  // namespace fcvt::testing
