@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-namespace fcvt {
+namespace fieldcvt {
 
 struct ClosestPoint {
     Vec3 point;            //!< closest point on the surface
@@ -35,4 +35,4 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace fcvt
+}  // namespace fieldcvt

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace fcvt {
+namespace fieldcvt {
 
 //! Base of every FCVT error.
 struct Error : std::runtime_error {
@@ -27,4 +27,4 @@ struct CancelledError : Error {
     CancelledError() : Error("cancelled") {}
 };
 
-}  // namespace fcvt
+}  // namespace fieldcvt

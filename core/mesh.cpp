@@ -3,7 +3,7 @@
 #include <Eigen/Geometry>
 #include <limits>
 
-namespace fcvt {
+namespace fieldcvt {
 
 Vec3 faceNormal(const TriMesh& mesh, int f)
 {
@@ -33,4 +33,4 @@ double boundingBoxDiagonal(const TriMesh& mesh)
     return (hi - lo).norm();
 }
 
-}  // namespace fcvt
+}  // namespace fieldcvt

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-namespace fcvt {
+namespace fieldcvt {
 
 using Vec3 = Eigen::Vector3d;
 using Face = std::array<int, 3>;
@@ -27,4 +27,4 @@ double surfaceArea(const TriMesh& mesh);
 //! Length of the bounding-box diagonal.
 double boundingBoxDiagonal(const TriMesh& mesh);
 
-}  // namespace fcvt
+}  // namespace fieldcvt

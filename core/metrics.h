@@ -4,7 +4,7 @@
 
 #include <limits>
 
-namespace fcvt {
+namespace fieldcvt {
 
 //! Topology of a triangle mesh, from its edge structure.
 struct TopologySummary {
@@ -51,4 +51,4 @@ struct DistanceMetrics {
 //! dense area-uniform samples of both surfaces (plus their vertices). Deterministic.
 DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, int samplesPerMesh = 200000);
 
-}  // namespace fcvt
+}  // namespace fieldcvt

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace fcvt {
+namespace fieldcvt {
 
 struct RemeshParams {
     int vertexCount = 5000;       //!< target number of output vertices (samples), >= 4
@@ -35,10 +35,11 @@ struct RemeshResult {
     double totalSeconds = 0;
     QualityMetrics metrics;              //!< Table 2 figures of mesh (d_* against the input)
     TopologySummary inputTopology;       //!< genus / boundary loops / components of the input
+    TopologySummary outputTopology;      //!< the same for the output
     std::vector<std::string> warnings;   //!< e.g. topology not recovered, solver restarts
 };
 
 //! Remeshes `input` (validated first; throws InvalidInputError with a clear message).
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress = {});
 
-}  // namespace fcvt
+}  // namespace fieldcvt

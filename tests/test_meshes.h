@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-namespace fcvt::testing {
+namespace fieldcvt::testing {
 
 inline std::string resource(const std::string& name) { return std::string(FCVT_RESOURCES_DIR) + "/" + name; }
 
@@ -78,4 +78,4 @@ inline TriMesh icosphere(int levels)
     return m;
 }
 
-}  // namespace fcvt::testing
+}  // namespace fieldcvt::testing

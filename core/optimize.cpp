@@ -1,0 +1,114 @@
+#include "optimize.h"
+
+#include "errors.h"
+#include "sampling.h"
+
+#include <LBFGS.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace fieldcvt {
+
+void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations,
+                     std::uint64_t seed)
+{
+    Eigen::VectorXd x, gradient;
+    std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+    for (int it = 0; it < iterations; ++it) {
+        x = flatten(seeds);
+        energy.evaluate(x, gradient);
+        const RvdResult& rvd = energy.lastDiagram();
+        int relocated = 0;
+        for (size_t i = 0; i < seeds.size(); ++i) {
+            if (rvd.mass[i] > 0) {
+                seeds[i] = rvd.moment[i] / rvd.mass[i];
+            } else {
+                // A lost seed (empty cell): put it back on the surface at a random place.
+                seeds[i] = sampleSurfaceUniform(surface, 1, rng())[0];
+                ++relocated;
+            }
+        }
+        (void)relocated;
+    }
+}
+
+namespace {
+
+// Wraps the energy for LBFGS++ and remembers the best point evaluated.
+struct TrackedObjective {
+    EnergyFunction& energy;
+    double bestValue = std::numeric_limits<double>::infinity();
+    Eigen::VectorXd best;
+
+    double operator()(const Eigen::VectorXd& x, Eigen::VectorXd& gradient)
+    {
+        const double value = energy.evaluate(x, gradient).total;
+        if (!std::isfinite(value) || !gradient.allFinite())
+            throw SolverError("the energy is not finite (a sample left the surface's neighbourhood)");
+        if (value < bestValue) {
+            bestValue = value;
+            best = x;
+        }
+        return value;
+    }
+};
+
+}  // namespace
+
+OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, const LbfgsParams& params)
+{
+    OptimizeStats stats;
+    if (params.iterations <= 0) return stats;
+    Eigen::VectorXd x = flatten(seeds);
+    TrackedObjective objective{energy};
+
+    LBFGSpp::LBFGSParam<double> solverParams;
+    solverParams.m = params.memory;
+    // Iterate for the full budget, as the paper's fixed schedule does: the gradient test only
+    // stops at a numerically exact minimum.
+    solverParams.epsilon = 1e-12 * std::sqrt(static_cast<double>(x.size()));
+    solverParams.epsilon_rel = 0;
+    solverParams.past = 0;
+    solverParams.max_linesearch = 40;
+
+    int failuresWithoutProgress = 0;
+    while (stats.iterations < params.iterations) {
+        solverParams.max_iterations = params.iterations - stats.iterations;
+        LBFGSpp::LBFGSSolver<double> solver(solverParams);
+        const double before = objective.bestValue;
+        const int evaluationsBefore = energy.evaluations();
+        double fx = 0;
+        try {
+            stats.iterations += solver.minimize(objective, x, fx);
+            stats.energies.push_back(fx);
+            break;  // budget used up or converged
+        } catch (const SolverError&) {
+            throw;
+        } catch (const CancelledError&) {
+            throw;
+        } catch (const std::exception& e) {
+            // Line search failed (non-smooth point of the RVD energy, or converged to round-off):
+            // restart L-BFGS from the best point, which forgets the curvature pairs.
+            ++stats.restarts;
+            // LBFGS++ does not say how far it got; count its evaluations against the budget
+            // (at least one iteration each), which keeps the loop bounded.
+            stats.iterations += std::max(1, energy.evaluations() - evaluationsBefore);
+            x = objective.best;
+            stats.energies.push_back(objective.bestValue);
+            failuresWithoutProgress = objective.bestValue < before ? 0 : failuresWithoutProgress + 1;
+            if (failuresWithoutProgress >= 2) {
+                stats.warnings.push_back(std::string("L-BFGS stopped early: ") + e.what());
+                break;
+            }
+        }
+    }
+    if (objective.best.size() == x.size() && objective.bestValue < std::numeric_limits<double>::infinity())
+        x = objective.best;
+    seeds = unflatten(x);
+    return stats;
+}
+
+}  // namespace fieldcvt

@@ -1,0 +1,33 @@
+#pragma once
+// Minimisation of the energy over the sample positions: Lloyd warm-up, then L-BFGS (LBFGS++)
+// with a fallback when its line search fails (§4.3, §5).
+#include "energy.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fieldcvt {
+
+struct LbfgsParams {
+    int iterations = 130;  //!< L-BFGS iterations (the paper's CVT budget, §5)
+    int memory = 7;        //!< correction pairs kept
+};
+
+struct OptimizeStats {
+    int iterations = 0;           //!< L-BFGS iterations done
+    int restarts = 0;             //!< line-search failures recovered by a restart
+    std::vector<double> energies; //!< E_tot after each restart segment's end, and at the end
+    std::vector<std::string> warnings;
+};
+
+//! `iterations` Lloyd steps: every seed moves to the centroid of its restricted cell. A seed
+//! whose cell is empty is moved to a random point of the surface (deterministic from `seed`).
+void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations,
+                     std::uint64_t seed);
+
+//! L-BFGS on the energy, starting from and updating `seeds`. The best point seen is kept: a
+//! line-search failure restarts from it; a second failure without progress ends early.
+OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, const LbfgsParams& params);
+
+}  // namespace fieldcvt

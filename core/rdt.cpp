@@ -1,0 +1,86 @@
+#include "rdt.h"
+
+#include <algorithm>
+#include <map>
+
+namespace fieldcvt {
+
+namespace {
+
+// Directed edge key, for the orientation and manifold checks.
+long long edgeKey(int a, int b, int n) { return static_cast<long long>(a) * n + b; }
+
+}  // namespace
+
+RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
+                     const ClosestPointTree& surface)
+{
+    RdtResult result;
+    const int n = static_cast<int>(seeds.size());
+
+    // Count faces per undirected edge and per directed edge. An edge is kept manifold when it
+    // has at most two faces and they traverse it in opposite directions.
+    std::vector<std::array<int, 3>> faces;
+    faces.reserve(triangles.size());
+    for (const auto& t : triangles)
+        if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) faces.push_back(t);
+
+    for (int pass = 0; pass < 8; ++pass) {
+        std::vector<long long> undirected, directed;
+        undirected.reserve(faces.size() * 3);
+        directed.reserve(faces.size() * 3);
+        for (const auto& t : faces)
+            for (int k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                undirected.push_back(edgeKey(std::min(a, b), std::max(a, b), n));
+                directed.push_back(edgeKey(a, b, n));
+            }
+        std::sort(undirected.begin(), undirected.end());
+        std::sort(directed.begin(), directed.end());
+        auto count = [](const std::vector<long long>& keys, long long key) {
+            auto range = std::equal_range(keys.begin(), keys.end(), key);
+            return static_cast<int>(range.second - range.first);
+        };
+        std::vector<std::array<int, 3>> kept;
+        kept.reserve(faces.size());
+        for (const auto& t : faces) {
+            bool bad = false;
+            for (int k = 0; k < 3 && !bad; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                bad = count(undirected, edgeKey(std::min(a, b), std::max(a, b), n)) > 2 || count(directed, edgeKey(a, b, n)) > 1;
+            }
+            if (!bad) kept.push_back(t);
+        }
+        if (kept.size() == faces.size()) break;
+        result.removedFaces += static_cast<int>(faces.size() - kept.size());
+        faces.swap(kept);
+    }
+
+    // Compact the vertices (samples used by a face), in sample order, and project them.
+    std::vector<int> vertexOfSeed(n, -1);
+    for (const auto& t : faces)
+        for (int s : t) vertexOfSeed[s] = 0;
+    for (int s = 0; s < n; ++s) {
+        if (vertexOfSeed[s] < 0) {
+            ++result.droppedSeeds;
+            continue;
+        }
+        vertexOfSeed[s] = static_cast<int>(result.seedOfVertex.size());
+        result.seedOfVertex.push_back(s);
+    }
+    result.mesh.vertices.resize(result.seedOfVertex.size());
+#pragma omp parallel for schedule(static)
+    for (int v = 0; v < static_cast<int>(result.seedOfVertex.size()); ++v)
+        result.mesh.vertices[v] = surface.closest(seeds[result.seedOfVertex[v]]).point;
+    result.mesh.faces.reserve(faces.size());
+    for (const auto& t : faces) result.mesh.faces.push_back({vertexOfSeed[t[0]], vertexOfSeed[t[1]], vertexOfSeed[t[2]]});
+
+    if (result.removedFaces > 0)
+        result.warnings.push_back("removed " + std::to_string(result.removedFaces) +
+                                  " restricted Delaunay faces on non-manifold edges (sampling too coarse for the input's detail)");
+    if (result.droppedSeeds > 0)
+        result.warnings.push_back(std::to_string(result.droppedSeeds) + " samples are in no output triangle");
+    return result;
+}
+
+}  // namespace fieldcvt

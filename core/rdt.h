@@ -1,0 +1,27 @@
+#pragma once
+// The output mesh: the restricted Delaunay triangulation (RDT), dual of the RVD (§3.1).
+#include "closest_point.h"
+#include "mesh.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace fieldcvt {
+
+struct RdtResult {
+    TriMesh mesh;
+    std::vector<int> seedOfVertex;  //!< sample index of each output vertex
+    int droppedSeeds = 0;           //!< samples in no triangle (empty or isolated cells)
+    int removedFaces = 0;           //!< faces removed to keep the output edge-manifold
+    std::vector<std::string> warnings;
+};
+
+//! Builds the output mesh from the RVD's triangles: removes faces that would make an edge
+//! non-manifold (more than two faces, or two faces with the same orientation), drops samples
+//! that no face uses and places each vertex at its sample's closest point on the input surface
+//! (which keeps the approximation error at CVT level).
+RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
+                     const ClosestPointTree& surface);
+
+}  // namespace fieldcvt

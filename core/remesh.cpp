@@ -1,0 +1,167 @@
+#include "remesh.h"
+
+#include "closest_point.h"
+#include "energy.h"
+#include "errors.h"
+#include "mesh_check.h"
+#include "optimize.h"
+#include "rdt.h"
+#include "sampling.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace fieldcvt {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+void validate(const RemeshParams& p)
+{
+    if (p.vertexCount < 4) throw InvalidInputError("vertex count must be at least 4 (got " + std::to_string(p.vertexCount) + ")");
+    if (p.vertexCount > 50000000) throw InvalidInputError("vertex count " + std::to_string(p.vertexCount) + " is too large (at most 50000000)");
+    if (!std::isfinite(p.lambda) || p.lambda < 0) throw InvalidInputError("lambda must be a finite number >= 0");
+    if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0)
+        throw InvalidInputError("iteration counts must be >= 0");
+    if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
+}
+
+// The working frame (§5): centred, and scaled so that the mean restricted Voronoi cell has
+// area 1. Every energy then has the same magnitude whatever the model's units and resolution.
+struct Normalisation {
+    Vec3 centre = Vec3::Zero();
+    double scale = 1;
+    Vec3 toWork(const Vec3& p) const { return (p - centre) * scale; }
+    Vec3 fromWork(const Vec3& p) const { return p / scale + centre; }
+};
+
+// Runs the stages in order, timing each and reporting overall progress.
+class Pipeline {
+public:
+    Pipeline(const RemeshParams& params, const Progress& progress, RemeshResult& result)
+        : params_(params), progress_(progress), result_(result)
+    {
+    }
+
+    template <class Stage>
+    void run(const std::string& name, Stage&& stage)
+    {
+        const auto start = Clock::now();
+        report(name, percent_);
+        stage();
+        result_.stageTimes.push_back({name, secondsSince(start)});
+    }
+
+    void report(const std::string& stage, double percent)
+    {
+        percent_ = percent;
+        if (progress_ && !progress_(stage, percent)) throw CancelledError();
+    }
+
+private:
+    const RemeshParams& params_;
+    const Progress& progress_;
+    RemeshResult& result_;
+    double percent_ = 0;
+};
+
+}  // namespace
+
+RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
+{
+    validate(params);
+    const auto start = Clock::now();
+    const int previousThreads = omp_get_max_threads();
+    struct ThreadGuard {
+        int restore;
+        ~ThreadGuard() { omp_set_num_threads(restore); }
+    } guard{previousThreads};
+    if (params.threads > 0) omp_set_num_threads(params.threads);
+
+    RemeshResult result;
+    Pipeline pipeline(params, progress, result);
+
+    TriMesh surface;
+    Normalisation frame;
+    pipeline.run("prepare", [&] {
+        InputReport report;
+        surface = prepareInput(input, report);
+        result.warnings.insert(result.warnings.end(), report.notes.begin(), report.notes.end());
+        result.inputTopology = computeTopology(surface);
+        const double area = surfaceArea(surface);
+        if (!(area > 0) || !std::isfinite(area)) throw InvalidInputError("the surface has no area");
+        Vec3 lo = surface.vertices[0], hi = surface.vertices[0];
+        for (const Vec3& p : surface.vertices) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+        frame.centre = 0.5 * (lo + hi);
+        frame.scale = std::sqrt(params.vertexCount / area);
+        for (Vec3& p : surface.vertices) p = frame.toWork(p);
+    });
+
+    const int lbfgsIterations = params.cvtIterations + params.fcvtIterations;
+    const double expectedEvaluations = params.lloydIterations + 1.2 * lbfgsIterations + 1;
+    EnergyFunction energy(surface);
+    std::string stage = "sampling";
+    energy.onEvaluation = [&](const EnergyValue&) {
+        const double fraction = std::min(1.0, energy.evaluations() / expectedEvaluations);
+        pipeline.report(stage, 5 + 85 * fraction);
+    };
+
+    std::vector<Vec3> seeds;
+    pipeline.run("sampling", [&] { seeds = sampleSurfaceUniform(surface, params.vertexCount, params.seed); });
+    pipeline.run("lloyd", [&] {
+        stage = "lloyd";
+        lloydRelaxation(energy, surface, seeds, params.lloydIterations, params.seed);
+    });
+    pipeline.run("cvt", [&] {
+        stage = "cvt";
+        OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{params.cvtIterations});
+        result.warnings.insert(result.warnings.end(), stats.warnings.begin(), stats.warnings.end());
+    });
+
+    pipeline.run("rdt", [&] {
+        stage = "rdt";
+        pipeline.report(stage, 90);
+        RvdOptions options;
+        options.triangles = true;
+        const RvdResult& rvd = energy.diagram(seeds, options);
+        ClosestPointTree tree(surface);
+        RdtResult rdt = extractRdt(seeds, rvd.triangles, tree);
+        result.warnings.insert(result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
+        result.mesh = std::move(rdt.mesh);
+        for (Vec3& p : result.mesh.vertices) p = frame.fromWork(p);
+    });
+    result.evaluations = energy.evaluations();
+
+    pipeline.run("metrics", [&] {
+        pipeline.report("metrics", 95);
+        result.metrics = computeQuality(result.mesh);
+        if (params.computeDistances && !result.mesh.faces.empty()) {
+            TriMesh reference = surface;
+            for (Vec3& p : reference.vertices) p = frame.fromWork(p);
+            const DistanceMetrics d = computeDistance(result.mesh, reference);
+            result.metrics.dRms = d.rms;
+            result.metrics.dH = d.hausdorff;
+        }
+        result.outputTopology = computeTopology(result.mesh);
+        const TopologySummary& in = result.inputTopology;
+        const TopologySummary& out = result.outputTopology;
+        if (!out.manifold()) result.warnings.push_back("the output is not manifold");
+        if (out.genus != in.genus || out.boundaryLoops != in.boundaryLoops || out.components != in.components)
+            result.warnings.push_back("topology not recovered at this vertex count: input genus " + std::to_string(in.genus) +
+                                      ", " + std::to_string(in.boundaryLoops) + " boundary loops, " + std::to_string(in.components) +
+                                      " components; output genus " + std::to_string(out.genus) + ", " +
+                                      std::to_string(out.boundaryLoops) + " boundary loops, " + std::to_string(out.components) +
+                                      " components (use more vertices)");
+    });
+    pipeline.report("done", 100);
+    result.totalSeconds = secondsSince(start);
+    return result;
+}
+
+}  // namespace fieldcvt

@@ -1,0 +1,365 @@
+#include "rvd.h"
+
+#include "errors.h"
+
+#include <Eigen/Geometry>
+#include <nanoflann.hpp>
+#include <omp.h>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace fieldcvt {
+
+double RvdResult::totalEnergy() const
+{
+    double e = 0;
+    for (double v : energy) e += v;
+    return e;
+}
+
+namespace {
+
+// nanoflann adaptor over the seed array.
+struct SeedCloud {
+    const std::vector<Vec3>* points = nullptr;
+    size_t kdtree_get_point_count() const { return points->size(); }
+    double kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
+    template <class BBox>
+    bool kdtree_get_bbox(BBox&) const { return false; }
+};
+using SeedTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SeedCloud>, SeedCloud, 3, uint32_t>;
+
+// A convex polygon inside one input triangle. label[k] names what created the edge from
+// vertex k to vertex k+1: a seed index j >= 0 for the bisector of (i, j), or -1 for the
+// triangle's own border. A convex polygon gains at most one vertex per clipping plane.
+constexpr int kMaxPolygonVertices = 96;
+struct Polygon {
+    int size = 0;
+    Vec3 point[kMaxPolygonVertices];
+    int label[kMaxPolygonVertices];
+};
+
+constexpr int kTrianglesPerChunk = 256;  // fixed, so results do not depend on the thread count
+constexpr int kStoredNeighbours = 20;    // per seed, enough for the security radius almost always
+
+struct CellPiece {
+    int seed;
+    double mass;
+    Vec3 moment;
+    double energy;
+};
+
+struct ChunkOutput {
+    std::vector<CellPiece> pieces;
+    std::vector<RvdEdge> edges;
+    std::vector<std::array<int, 3>> triangles;
+    long long clipped = 0;
+    void clear()
+    {
+        pieces.clear();
+        edges.clear();
+        triangles.clear();
+        clipped = 0;
+    }
+};
+
+// Per-thread work space, reused across evaluations (no allocation in steady state).
+struct Scratch {
+    std::vector<int> stack;
+    std::vector<int> visited;
+    std::vector<uint32_t> extraIndex;
+    std::vector<double> extraDist;
+};
+
+std::array<int, 3> canonicalTriangle(int a, int b, int c)
+{
+    // Rotate so the smallest index comes first; the cyclic order (orientation) is kept.
+    if (a < b && a < c) return {a, b, c};
+    if (b < a && b < c) return {b, c, a};
+    return {c, a, b};
+}
+
+}  // namespace
+
+struct RestrictedVoronoiDiagram::Impl {
+    const TriMesh& surface;
+    std::vector<Vec3> unitNormals;  // per input face
+    std::vector<ChunkOutput> chunks;
+    std::vector<Scratch> scratch;
+
+    // Per evaluation.
+    const std::vector<Vec3>* seeds = nullptr;
+    SeedCloud cloud;
+    std::unique_ptr<SeedTree> tree;
+    std::vector<uint32_t> neighbourIndex;  // n * kStoredNeighbours, nearest first, self excluded
+    std::vector<double> neighbourDist2;
+    int storedNeighbours = 0;
+
+    explicit Impl(const TriMesh& s) : surface(s)
+    {
+        unitNormals.resize(s.faces.size());
+        for (int f = 0; f < s.faceCount(); ++f) {
+            const Vec3 n = faceNormal(s, f);
+            const double len = n.norm();
+            unitNormals[f] = len > 0 ? Vec3(n / len) : Vec3::Zero();
+        }
+        chunks.resize((s.faces.size() + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
+    }
+
+    void buildNeighbourLists()
+    {
+        const int n = static_cast<int>(seeds->size());
+        cloud.points = seeds;
+        tree = std::make_unique<SeedTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+        storedNeighbours = std::min(kStoredNeighbours, n - 1);
+        neighbourIndex.resize(static_cast<size_t>(n) * storedNeighbours);
+        neighbourDist2.resize(neighbourIndex.size());
+        const int k = storedNeighbours + 1;
+#pragma omp parallel
+        {
+            std::vector<uint32_t> idx(k);
+            std::vector<double> d2(k);
+#pragma omp for schedule(static)
+            for (int i = 0; i < n; ++i) {
+                const size_t found = tree->knnSearch((*seeds)[i].data(), k, idx.data(), d2.data());
+                int stored = 0;
+                for (size_t q = 0; q < found && stored < storedNeighbours; ++q) {
+                    if (static_cast<int>(idx[q]) == i) continue;
+                    neighbourIndex[static_cast<size_t>(i) * storedNeighbours + stored] = idx[q];
+                    neighbourDist2[static_cast<size_t>(i) * storedNeighbours + stored] = d2[q];
+                    ++stored;
+                }
+                // The seed itself was not among the k nearest (many coincident seeds): fill up.
+                for (; stored < storedNeighbours; ++stored) {
+                    neighbourIndex[static_cast<size_t>(i) * storedNeighbours + stored] = idx[found - 1];
+                    neighbourDist2[static_cast<size_t>(i) * storedNeighbours + stored] = d2[found - 1];
+                }
+            }
+        }
+    }
+
+    // Clips `poly` by the bisector half-space of seeds i and j that contains x_i.
+    // Returns whether the polygon changed.
+    static bool clipByBisector(Polygon& poly, const Vec3& xi, const Vec3& xj, int j)
+    {
+        const Vec3 d = xj - xi;
+        const double half = 0.5 * d.squaredNorm();
+        double side[kMaxPolygonVertices];
+        bool anyOutside = false, anyInside = false;
+        for (int k = 0; k < poly.size; ++k) {
+            side[k] = (poly.point[k] - xi).dot(d) - half;  // > 0: nearer to x_j
+            if (side[k] > 0) anyOutside = true; else anyInside = true;
+        }
+        if (!anyOutside) return false;
+        if (!anyInside) {
+            poly.size = 0;
+            return true;
+        }
+        Polygon out;
+        for (int k = 0; k < poly.size; ++k) {
+            const int next = (k + 1) % poly.size;
+            const bool inside = side[k] <= 0, nextInside = side[next] <= 0;
+            if (inside) {
+                out.point[out.size] = poly.point[k];
+                out.label[out.size++] = poly.label[k];
+            }
+            if (inside != nextInside) {
+                if (out.size + 1 >= kMaxPolygonVertices) throw Error("restricted Voronoi cell has too many vertices");
+                const double t = side[k] / (side[k] - side[next]);
+                out.point[out.size] = poly.point[k] + t * (poly.point[next] - poly.point[k]);
+                // Leaving the half-space: the new edge runs along the bisector of (i, j).
+                out.label[out.size++] = inside ? j : poly.label[k];
+            }
+        }
+        // Copy only the used part (the arrays are large and mostly empty).
+        for (int k = 0; k < out.size; ++k) {
+            poly.point[k] = out.point[k];
+            poly.label[k] = out.label[k];
+        }
+        poly.size = out.size;
+        return true;
+    }
+
+    static double maxSquaredDistance(const Polygon& poly, const Vec3& x)
+    {
+        double r2 = 0;
+        for (int k = 0; k < poly.size; ++k) r2 = std::max(r2, (poly.point[k] - x).squaredNorm());
+        return r2;
+    }
+
+    // Clips `poly` to the Voronoi cell of seed i. A neighbour farther than twice the polygon's
+    // radius around x_i cannot cut it (security radius), so neighbours are visited nearest
+    // first until that holds.
+    void clipToCell(Polygon& poly, int i, Scratch& scratch, long long& clipped) const
+    {
+        const Vec3& xi = (*seeds)[i];
+        double radius2 = maxSquaredDistance(poly, xi);
+        auto visit = [&](uint32_t j, double d2) {
+            if (d2 > 4.0 * radius2) return false;  // security radius reached: done
+            if (d2 == 0.0) {
+                // Coincident seeds: the lower index keeps the cell.
+                if (static_cast<int>(j) < i) poly.size = 0;
+                return poly.size > 0;
+            }
+            ++clipped;
+            if (clipByBisector(poly, xi, (*seeds)[j], static_cast<int>(j))) {
+                if (poly.size == 0) return false;
+                radius2 = maxSquaredDistance(poly, xi);
+            }
+            return true;
+        };
+        const uint32_t* idx = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
+        const double* d2 = neighbourDist2.data() + static_cast<size_t>(i) * storedNeighbours;
+        for (int q = 0; q < storedNeighbours; ++q)
+            if (!visit(idx[q], d2[q])) return;
+        // Rare: the stored neighbours did not reach the security radius. Ask the tree for more.
+        const size_t n = seeds->size();
+        for (size_t k = 4 * static_cast<size_t>(storedNeighbours) + 1;; k *= 4) {
+            k = std::min(k, n);
+            scratch.extraIndex.resize(k);
+            scratch.extraDist.resize(k);
+            const size_t found = tree->knnSearch(xi.data(), k, scratch.extraIndex.data(), scratch.extraDist.data());
+            // Skip what the stored list covered: everything up to its last distance.
+            const double covered = storedNeighbours > 0 ? d2[storedNeighbours - 1] : -1.0;
+            for (size_t q = 0; q < found; ++q) {
+                const uint32_t j = scratch.extraIndex[q];
+                if (static_cast<int>(j) == i || scratch.extraDist[q] < covered) continue;
+                if (scratch.extraDist[q] == covered && std::find(idx, idx + storedNeighbours, j) != idx + storedNeighbours)
+                    continue;
+                if (!visit(j, scratch.extraDist[q])) return;
+            }
+            if (k == n) return;
+        }
+    }
+
+    // All cells meeting input triangle t: start from the seed nearest to its centroid and walk
+    // across shared bisector edges (cells meeting a convex polygon form a connected set).
+    void processTriangle(int t, const RvdOptions& options, ChunkOutput& out, Scratch& scratch) const
+    {
+        const Face& f = surface.faces[t];
+        const Vec3& nrm = unitNormals[t];
+        if (nrm.isZero()) return;  // zero-area face: nothing to integrate
+        const Vec3 a = surface.vertices[f[0]], b = surface.vertices[f[1]], c = surface.vertices[f[2]];
+        const Vec3 centroid = (a + b + c) / 3.0;
+        uint32_t start = 0;
+        double startDist2 = 0;
+        tree->knnSearch(centroid.data(), 1, &start, &startDist2);
+
+        scratch.stack.assign(1, static_cast<int>(start));
+        scratch.visited.assign(1, static_cast<int>(start));
+        while (!scratch.stack.empty()) {
+            const int i = scratch.stack.back();
+            scratch.stack.pop_back();
+            Polygon poly;
+            poly.size = 3;
+            poly.point[0] = a, poly.point[1] = b, poly.point[2] = c;
+            poly.label[0] = poly.label[1] = poly.label[2] = -1;
+            clipToCell(poly, i, scratch, out.clipped);
+            if (poly.size < 3) continue;
+
+            integrate(poly, i, nrm, out);
+            for (int k = 0; k < poly.size; ++k) {
+                const int j = poly.label[k];
+                if (j < 0) continue;
+                if (std::find(scratch.visited.begin(), scratch.visited.end(), j) == scratch.visited.end()) {
+                    scratch.visited.push_back(j);
+                    scratch.stack.push_back(j);
+                }
+                if (options.edges && i < j) {
+                    const double len = (poly.point[(k + 1) % poly.size] - poly.point[k]).norm();
+                    out.edges.push_back({i, j, len});
+                }
+                // Vertex k+1 ends edge k (bisector i|j) and starts edge k+1 (bisector i|l):
+                // it is equidistant from i, j, l, and j, l follow each other counter-clockwise
+                // around i, so (i, j, l) is a restricted Delaunay triangle with the input's
+                // orientation.
+                const int l = poly.label[(k + 1) % poly.size];
+                if (options.triangles && l >= 0 && l != j) out.triangles.push_back(canonicalTriangle(i, j, l));
+            }
+        }
+    }
+
+    // Accumulates mass, first moment and ∫||x - x_i||² over the polygon (eq. 1, ρ = 1) by a
+    // fan of triangles; areas are signed along the input face normal.
+    void integrate(const Polygon& poly, int i, const Vec3& nrm, ChunkOutput& out) const
+    {
+        const Vec3& xi = (*seeds)[i];
+        const Vec3 q0 = poly.point[0] - xi;
+        double mass = 0, energy = 0;
+        Vec3 moment = Vec3::Zero();
+        for (int k = 1; k + 1 < poly.size; ++k) {
+            const Vec3 q1 = poly.point[k] - xi, q2 = poly.point[k + 1] - xi;
+            const double area = 0.5 * nrm.dot((q1 - q0).cross(q2 - q0));
+            mass += area;
+            moment += area / 3.0 * (q0 + q1 + q2);
+            energy += area / 6.0 * (q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm() + q0.dot(q1) + q1.dot(q2) + q2.dot(q0));
+        }
+        out.pieces.push_back({i, mass, moment + mass * xi, energy});
+    }
+};
+
+RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriMesh& surface) : impl_(std::make_unique<Impl>(surface)) {}
+RestrictedVoronoiDiagram::~RestrictedVoronoiDiagram() = default;
+
+void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const RvdOptions& options, RvdResult& result)
+{
+    if (seeds.empty()) throw InvalidInputError("restricted Voronoi diagram needs at least one seed");
+    Impl& m = *impl_;
+    m.seeds = &seeds;
+    m.buildNeighbourLists();
+
+    const int faceCount = m.surface.faceCount();
+    const int chunkCount = static_cast<int>(m.chunks.size());
+    m.scratch.resize(std::max(1, omp_get_max_threads()));
+#pragma omp parallel
+    {
+        Scratch& scratch = m.scratch[omp_get_thread_num()];
+#pragma omp for schedule(dynamic, 1)
+        for (int c = 0; c < chunkCount; ++c) {
+            ChunkOutput& out = m.chunks[c];
+            out.clear();
+            const int end = std::min(faceCount, (c + 1) * kTrianglesPerChunk);
+            for (int t = c * kTrianglesPerChunk; t < end; ++t) m.processTriangle(t, options, out, scratch);
+        }
+    }
+
+    // Reduction in chunk order: identical sums whatever the thread count.
+    const size_t n = seeds.size();
+    result.mass.assign(n, 0.0);
+    result.moment.assign(n, Vec3::Zero());
+    result.energy.assign(n, 0.0);
+    result.edges.clear();
+    result.triangles.clear();
+    result.clippedPolygons = 0;
+    for (const ChunkOutput& out : m.chunks) {
+        for (const CellPiece& p : out.pieces) {
+            result.mass[p.seed] += p.mass;
+            result.moment[p.seed] += p.moment;
+            result.energy[p.seed] += p.energy;
+        }
+        result.clippedPolygons += out.clipped;
+        if (options.edges) result.edges.insert(result.edges.end(), out.edges.begin(), out.edges.end());
+        if (options.triangles) result.triangles.insert(result.triangles.end(), out.triangles.begin(), out.triangles.end());
+    }
+    if (options.edges) {
+        // Sum the pieces of each shared edge (an RVD edge crosses several input triangles).
+        // stable_sort keeps the chunk order inside a pair, so the sums are deterministic.
+        std::stable_sort(result.edges.begin(), result.edges.end(),
+                         [](const RvdEdge& x, const RvdEdge& y) { return x.i != y.i ? x.i < y.i : x.j < y.j; });
+        size_t w = 0;
+        for (size_t r = 0; r < result.edges.size(); ++r) {
+            if (w > 0 && result.edges[w - 1].i == result.edges[r].i && result.edges[w - 1].j == result.edges[r].j)
+                result.edges[w - 1].length += result.edges[r].length;
+            else
+                result.edges[w++] = result.edges[r];
+        }
+        result.edges.resize(w);
+    }
+    if (options.triangles) {
+        std::sort(result.triangles.begin(), result.triangles.end());
+        result.triangles.erase(std::unique(result.triangles.begin(), result.triangles.end()), result.triangles.end());
+    }
+}
+
+}  // namespace fieldcvt

@@ -1,0 +1,59 @@
+#pragma once
+// Exact restricted Voronoi diagram (RVD) of seeds on a triangle surface (paper §3.1, after
+// Yan, Lévy et al. 2009 and Geogram's RVD): every input triangle is clipped by the bisector
+// planes of the seeds whose cells meet it. Per cell it integrates mass, first moment and the
+// CVT energy (eq. 1); optionally the length of every shared RVD edge (the weights w_ij of §3.5)
+// and the restricted Delaunay triangles (RVD vertices equidistant from three seeds).
+#include "mesh.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace fieldcvt {
+
+struct RvdOptions {
+    bool edges = false;      //!< fill RvdResult::edges
+    bool triangles = false;  //!< fill RvdResult::triangles
+};
+
+//! An RVD edge shared by the cells of seeds i < j, and its total length on the surface.
+struct RvdEdge {
+    int i = 0, j = 0;
+    double length = 0;
+};
+
+struct RvdResult {
+    std::vector<double> mass;    //!< m_i = area of the restricted cell (times density)
+    std::vector<Vec3> moment;    //!< ∫ x dσ over the cell; centroid c_i = moment_i / m_i
+    std::vector<double> energy;  //!< ∫ ||x - x_i||² dσ over the cell (eq. 1)
+    std::vector<RvdEdge> edges;  //!< sorted by (i, j), one entry per neighbouring pair
+    //! One triangle (i, j, k) per RVD vertex where three cells meet, oriented like the input
+    //! surface, listed once (sorted, duplicates removed).
+    std::vector<std::array<int, 3>> triangles;
+    //! Number of (triangle, cell) polygons clipped; a cost figure for benchmarks.
+    long long clippedPolygons = 0;
+
+    double totalEnergy() const;
+};
+
+//! Computes the RVD of varying seed sets on one fixed surface. The surface must outlive it.
+//! compute() is parallel over triangles (OpenMP); its result does not depend on the thread
+//! count (fixed chunks, reduction in chunk order).
+class RestrictedVoronoiDiagram {
+public:
+    explicit RestrictedVoronoiDiagram(const TriMesh& surface);
+    ~RestrictedVoronoiDiagram();
+    RestrictedVoronoiDiagram(const RestrictedVoronoiDiagram&) = delete;
+    RestrictedVoronoiDiagram& operator=(const RestrictedVoronoiDiagram&) = delete;
+
+    //! Computes the diagram of `seeds` (at least one). Coincident seeds are allowed: the one
+    //! with the larger index gets an empty cell.
+    void compute(const std::vector<Vec3>& seeds, const RvdOptions& options, RvdResult& result);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fieldcvt

@@ -1,0 +1,18 @@
+#pragma once
+// Initial samples for the CVT (§5): area-uniform random points on the surface.
+#include "mesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace fieldcvt {
+
+//! `count` points distributed uniformly by area over the surface, from a seeded generator
+//! (std::mt19937_64 and our own uniform mapping, so the points are the same on every platform).
+std::vector<Vec3> sampleSurfaceUniform(const TriMesh& surface, int count, std::uint64_t seed);
+
+//! Maps a 64-bit random word to [0, 1) with 53 bits (platform-independent, unlike
+//! std::uniform_real_distribution).
+inline double unitInterval(std::uint64_t word) { return static_cast<double>(word >> 11) * 0x1.0p-53; }
+
+}  // namespace fieldcvt
