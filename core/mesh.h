@@ -2,6 +2,7 @@
 // The indexed triangle mesh every core stage reads and writes (double precision; the MeshLab
 // adapter converts from CMeshO's float). Validation and repair live in mesh_check.h.
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products on Vec3 everywhere
 #include <array>
 #include <vector>
 

@@ -94,6 +94,7 @@ struct RestrictedVoronoiDiagram::Impl {
     std::unique_ptr<SeedTree> tree;
     std::vector<uint32_t> neighbourIndex;  // n * kStoredNeighbours, nearest first, self excluded
     std::vector<double> neighbourDist2;
+    std::vector<char> duplicate;  // seed coincides with a lower-index seed: empty cell, no bisector
     int storedNeighbours = 0;
 
     explicit Impl(const TriMesh& s) : surface(s)
@@ -115,6 +116,7 @@ struct RestrictedVoronoiDiagram::Impl {
         storedNeighbours = std::min(kStoredNeighbours, n - 1);
         neighbourIndex.resize(static_cast<size_t>(n) * storedNeighbours);
         neighbourDist2.resize(neighbourIndex.size());
+        duplicate.assign(n, 0);
         const int k = storedNeighbours + 1;
 #pragma omp parallel
         {
@@ -126,6 +128,7 @@ struct RestrictedVoronoiDiagram::Impl {
                 int stored = 0;
                 for (size_t q = 0; q < found && stored < storedNeighbours; ++q) {
                     if (static_cast<int>(idx[q]) == i) continue;
+                    if (d2[q] == 0.0 && static_cast<int>(idx[q]) < i) duplicate[i] = 1;
                     neighbourIndex[static_cast<size_t>(i) * storedNeighbours + stored] = idx[q];
                     neighbourDist2[static_cast<size_t>(i) * storedNeighbours + stored] = d2[q];
                     ++stored;
@@ -194,14 +197,15 @@ struct RestrictedVoronoiDiagram::Impl {
     void clipToCell(Polygon& poly, int i, Scratch& scratch, long long& clipped) const
     {
         const Vec3& xi = (*seeds)[i];
+        if (duplicate[i]) {
+            poly.size = 0;
+            return;
+        }
         double radius2 = maxSquaredDistance(poly, xi);
         auto visit = [&](uint32_t j, double d2) {
             if (d2 > 4.0 * radius2) return false;  // security radius reached: done
-            if (d2 == 0.0) {
-                // Coincident seeds: the lower index keeps the cell.
-                if (static_cast<int>(j) < i) poly.size = 0;
-                return poly.size > 0;
-            }
+            // Coincident seeds: the lowest index keeps the cell, the others are ignored.
+            if (duplicate[j]) return true;
             ++clipped;
             if (clipByBisector(poly, xi, (*seeds)[j], static_cast<int>(j))) {
                 if (poly.size == 0) return false;
@@ -242,13 +246,25 @@ struct RestrictedVoronoiDiagram::Impl {
         if (nrm.isZero()) return;  // zero-area face: nothing to integrate
         const Vec3 a = surface.vertices[f[0]], b = surface.vertices[f[1]], c = surface.vertices[f[2]];
         const Vec3 centroid = (a + b + c) / 3.0;
-        uint32_t start = 0;
-        double startDist2 = 0;
-        tree->knnSearch(centroid.data(), 1, &start, &startDist2);
+        // The nearest seed's cell contains the centroid; its polygon is empty only if that seed
+        // coincides with a lower-index one, so a few nearest candidates are enough.
+        constexpr int kStartCandidates = 8;
+        uint32_t candidate[kStartCandidates];
+        double candidateDist2[kStartCandidates];
+        const int candidates = static_cast<int>(tree->knnSearch(centroid.data(), kStartCandidates, candidate, candidateDist2));
+        int nextCandidate = 0;
+        bool anyPiece = false;
 
-        scratch.stack.assign(1, static_cast<int>(start));
-        scratch.visited.assign(1, static_cast<int>(start));
-        while (!scratch.stack.empty()) {
+        scratch.stack.clear();
+        scratch.visited.clear();
+        while (true) {
+            if (scratch.stack.empty()) {
+                if (anyPiece || nextCandidate >= candidates) break;
+                const int start = static_cast<int>(candidate[nextCandidate++]);
+                if (std::find(scratch.visited.begin(), scratch.visited.end(), start) != scratch.visited.end()) continue;
+                scratch.stack.push_back(start);
+                scratch.visited.push_back(start);
+            }
             const int i = scratch.stack.back();
             scratch.stack.pop_back();
             Polygon poly;
@@ -257,6 +273,7 @@ struct RestrictedVoronoiDiagram::Impl {
             poly.label[0] = poly.label[1] = poly.label[2] = -1;
             clipToCell(poly, i, scratch, out.clipped);
             if (poly.size < 3) continue;
+            anyPiece = true;
 
             integrate(poly, i, nrm, out);
             for (int k = 0; k < poly.size; ++k) {

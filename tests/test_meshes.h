@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-namespace fieldcvt::testing {
+namespace fieldcvt::testmesh {
 
 inline std::string resource(const std::string& name) { return std::string(FCVT_RESOURCES_DIR) + "/" + name; }
 
@@ -78,4 +78,4 @@ inline TriMesh icosphere(int levels)
     return m;
 }
 
-}  // namespace fieldcvt::testing
+}  // namespace fieldcvt::testmesh

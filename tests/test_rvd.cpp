@@ -1,0 +1,132 @@
+// The exact restricted Voronoi diagram: invariants and a case with a known answer.
+#include "rvd.h"
+#include "sampling.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <numeric>
+
+using namespace fieldcvt;
+
+namespace {
+
+double sum(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+
+}  // namespace
+
+TEST(Rvd, CellAreasSumToSurfaceArea)
+{
+    for (const TriMesh& surface : {testmesh::icosphere(3), testmesh::torus(40, 20), testmesh::planeGrid(12)}) {
+        for (int count : {1, 7, 300}) {
+            const std::vector<Vec3> seeds = sampleSurfaceUniform(surface, count, 42);
+            RestrictedVoronoiDiagram rvd(surface);
+            RvdResult result;
+            rvd.compute(seeds, RvdOptions{}, result);
+            EXPECT_NEAR(sum(result.mass), surfaceArea(surface), 1e-9 * surfaceArea(surface)) << count << " seeds";
+            for (double m : result.mass) EXPECT_GE(m, -1e-15);
+        }
+    }
+}
+
+TEST(Rvd, SeedsOffTheSurfaceStillPartitionIt)
+{
+    // Samples leave the surface during L-BFGS (they move towards off-surface centroids).
+    const TriMesh surface = testmesh::icosphere(3);
+    std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 200, 3);
+    for (size_t i = 0; i < seeds.size(); ++i) seeds[i] *= (i % 2 ? 0.9 : 1.1);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult result;
+    rvd.compute(seeds, RvdOptions{}, result);
+    EXPECT_NEAR(sum(result.mass), surfaceArea(surface), 1e-9 * surfaceArea(surface));
+}
+
+TEST(Rvd, SquareLatticeOnAPlaneGivesSquareCells)
+{
+    // Seeds at the centres of a k x k grid on the unit square: every cell is the grid square,
+    // with mass h², centroid at the seed, energy h⁴/6, and shared edges of length h.
+    const int k = 5;
+    const double h = 1.0 / k;
+    const TriMesh surface = testmesh::planeGrid(7);  // triangle edges do not follow the cells
+    std::vector<Vec3> seeds;
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) seeds.emplace_back((i + 0.5) * h, (j + 0.5) * h, 0.0);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult result;
+    RvdOptions options;
+    options.edges = true;
+    rvd.compute(seeds, options, result);
+    for (size_t s = 0; s < seeds.size(); ++s) {
+        EXPECT_NEAR(result.mass[s], h * h, 1e-12);
+        EXPECT_NEAR((result.moment[s] / result.mass[s] - seeds[s]).norm(), 0.0, 1e-12);
+        EXPECT_NEAR(result.energy[s], h * h * h * h / 6.0, 1e-12);
+    }
+    int axisNeighbours = 0;
+    for (const RvdEdge& e : result.edges) {
+        const Vec3 d = seeds[e.j] - seeds[e.i];
+        if (std::abs(d.norm() - h) < 1e-12) {
+            ++axisNeighbours;
+            EXPECT_NEAR(e.length, h, 1e-12);
+        } else {
+            EXPECT_NEAR(e.length, 0.0, 1e-12);  // diagonal pairs touch at a corner at most
+        }
+    }
+    EXPECT_EQ(axisNeighbours, 2 * k * (k - 1));
+}
+
+TEST(Rvd, HexagonalLatticeGivesEquilateralDelaunayTriangles)
+{
+    // A triangular lattice of seeds: every interior RDT triangle is equilateral.
+    const double h = 0.1;
+    const TriMesh surface = testmesh::planeGrid(9, 1.0);
+    std::vector<Vec3> seeds;
+    for (int j = 0; j * h * std::sqrt(3.0) / 2 <= 1.0; ++j)
+        for (int i = 0; (i + 0.5 * (j % 2)) * h <= 1.0; ++i) seeds.emplace_back((i + 0.5 * (j % 2)) * h, j * h * std::sqrt(3.0) / 2, 0.0);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult result;
+    RvdOptions options;
+    options.triangles = true;
+    rvd.compute(seeds, options, result);
+    ASSERT_GT(result.triangles.size(), 100u);
+    for (const auto& t : result.triangles) {
+        const Vec3 a = seeds[t[0]], b = seeds[t[1]], c = seeds[t[2]];
+        EXPECT_NEAR((b - a).norm(), h, 1e-9);
+        EXPECT_NEAR((c - b).norm(), h, 1e-9);
+        EXPECT_NEAR((a - c).norm(), h, 1e-9);
+        EXPECT_GT((b - a).cross(c - a).z(), 0.0) << "oriented like the input (normal +z)";
+    }
+}
+
+TEST(Rvd, CoincidentSeedsAreNotCountedTwice)
+{
+    const TriMesh surface = testmesh::icosphere(2);
+    std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 50, 9);
+    seeds.push_back(seeds[10]);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult result;
+    rvd.compute(seeds, RvdOptions{}, result);
+    EXPECT_NEAR(sum(result.mass), surfaceArea(surface), 1e-9 * surfaceArea(surface));
+    EXPECT_EQ(result.mass.back(), 0.0);
+}
+
+TEST(Rvd, ResultDoesNotDependOnThreadCount)
+{
+    const TriMesh surface = testmesh::torus(60, 30);
+    const std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 500, 5);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdOptions options;
+    options.edges = options.triangles = true;
+    RvdResult one, two;
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    rvd.compute(seeds, options, one);
+    omp_set_num_threads(2);
+    rvd.compute(seeds, options, two);
+    omp_set_num_threads(threads);
+    EXPECT_EQ(one.mass, two.mass);
+    EXPECT_EQ(one.energy, two.energy);
+    EXPECT_EQ(one.triangles, two.triangles);
+    ASSERT_EQ(one.edges.size(), two.edges.size());
+    for (size_t e = 0; e < one.edges.size(); ++e) EXPECT_EQ(one.edges[e].length, two.edges[e].length);
+}
