@@ -1,0 +1,30 @@
+# Shared by the meshlabserver tests (sourced). Stages the plugin and runs meshlabserver under a
+# virtual X server, since the 2020.09 server needs an OpenGL context even for non-GL filters.
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# stage_meshlab STAGE_DIR PLUGIN_SO -> prints the staged meshlabserver path
+stage_meshlab() {
+  "$FCVT_SOURCE_DIR/scripts/stage-meshlab.sh" "$1" "$2" >/dev/null || fail "staging MeshLab in $1"
+  echo "$1/bin/meshlabserver"
+}
+
+# run_meshlabserver SERVER LOG ARGS...: stdout (meshlabserver's log) to LOG, stderr to LOG.err;
+# sets MLS_RC. timeout keeps a hung server from blocking CTest until its own timeout.
+run_meshlabserver() {
+  local server="$1" log="$2"
+  shift 2
+  set +e
+  timeout 500 xvfb-run -a "$server" "$@" >"$log" 2>"$log.err"
+  MLS_RC=$?
+  set -e
+  echo "--- meshlabserver $* (exit $MLS_RC); log:"
+  cat "$log"
+  echo "--- stderr (last lines):"
+  tail -n 15 "$log.err"
+}
+
+# The value of parameter NAME in the .mlx script FILE.
+mlx_param() {
+  sed -n "s/.*name=\"$2\"[^>]*value=\"\([^\"]*\)\".*/\1/p" "$1" | head -n 1
+}

@@ -1,0 +1,31 @@
+# End-to-end tests of libfilter_fcvt.so through Debian's meshlabserver 2020.09 (label: meshlab).
+# Each test stages its own private MeshLab tree under the build directory
+# (scripts/stage-meshlab.sh), so tests may run in parallel and the system plugin directory is
+# never touched.
+if(NOT TARGET filter_fcvt)
+  return()
+endif()
+find_program(FCVT_XVFB_RUN xvfb-run)
+if(NOT FCVT_XVFB_RUN OR NOT EXISTS /usr/bin/meshlabserver)
+  message(STATUS "meshlab tests disabled: xvfb-run or /usr/bin/meshlabserver not found")
+  return()
+endif()
+
+set(_fcvt_ml_dir "${CMAKE_CURRENT_SOURCE_DIR}/meshlab")
+set(_fcvt_ml_work "${CMAKE_CURRENT_BINARY_DIR}/meshlab")
+set(_fcvt_ml_cli "")
+if(TARGET fcvt)
+  set(_fcvt_ml_cli "$<TARGET_FILE:fcvt>")
+endif()
+
+add_test(NAME meshlab_plugin_loads
+  COMMAND bash "${_fcvt_ml_dir}/plugin_loads.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/plugin_loads")
+add_test(NAME meshlab_remesh_torus
+  COMMAND bash "${_fcvt_ml_dir}/remesh_torus.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/remesh_torus" ${_fcvt_ml_cli})
+add_test(NAME meshlab_invalid_parameter
+  COMMAND bash "${_fcvt_ml_dir}/invalid_parameter.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/invalid_parameter")
+set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_parameter
+  PROPERTIES LABELS meshlab TIMEOUT 600)
