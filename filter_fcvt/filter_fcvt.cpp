@@ -202,7 +202,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
                                                             double percent) {
         if (cb == nullptr)
             return true;
-        const int p = std::clamp(static_cast<int>(percent), 0, 100);
+        const int p = std::isfinite(percent) ? static_cast<int>(std::clamp(percent, 0.0, 100.0)) : 0;
         if (p != lastPercent || stage != lastStage) {
             lastPercent = p;
             lastStage = stage;
@@ -267,11 +267,15 @@ void FilterFcvtPlugin::logReport(const fieldcvt::RemeshResult& r, const QString&
         times += QString(" %1 %2 s,").arg(QString::fromStdString(t.stage)).arg(num(t.seconds, 3));
     times += QString(" total %1 s").arg(num(r.totalSeconds, 3));
     Log(times.toStdString());
-    const fieldcvt::TopologySummary& t = r.inputTopology;
-    Log(QString("FCVT input topology: genus %1, %2 boundary loops, %3 components")
+    const auto topology = [](const fieldcvt::TopologySummary& t) {
+        return QString("genus %1, %2 boundary loops, %3 components%4")
             .arg(t.genus)
             .arg(t.boundaryLoops)
             .arg(t.components)
+            .arg(t.manifold() ? "" : ", NON-MANIFOLD");
+    };
+    Log(QString("FCVT topology: input %1; output %2")
+            .arg(topology(r.inputTopology), topology(r.outputTopology))
             .toStdString());
     for (const std::string& w : r.warnings)
         Log(GLLogStream::WARNING, "FCVT warning: " + w);

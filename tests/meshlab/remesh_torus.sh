@@ -25,6 +25,9 @@ grep -q "FCVT: new layer 'torus.off FCVT'" "$work/out/log.txt" || fail "no new l
 grep -q "FCVT metrics: Q_min" "$work/out/log.txt" || fail "no metrics in the log"
 grep -q "FCVT times:" "$work/out/log.txt" || fail "no stage times in the log"
 [ -s "$out" ] || fail "$out not written"
+# The filter's own report must already clear the Q_avg floor (also checked independently below).
+qavg="$(sed -n 's/^.*FCVT metrics: .*Q_avg \([0-9.eE+-]*\),.*/\1/p' "$work/out/log.txt" | head -n 1)"
+awk -v q="$qavg" 'BEGIN { exit !(q + 0 >= 0.9) }' || fail "logged Q_avg '$qavg' < 0.9"
 
 # Vertex count from the PLY header: within 5 % of the script's vertexCount.
 vn="$(sed -n 's/^element vertex \([0-9]*\).*/\1/p' "$out" | head -n 1 | tr -d '\r')"
