@@ -1,12 +1,12 @@
 #pragma once
-// Mesh files <-> fcvt::TriMesh, through vcglib's wrap/io_trimesh (PLY, OFF, STL) and a tolerant
+// Mesh files <-> fieldcvt::TriMesh, through vcglib's wrap/io_trimesh (PLY, OFF, STL) and a tolerant
 // OBJ reader. Kept out of core/ so the engine has no vcglib dependency.
 #include "mesh.h"
 
 #include <string>
 #include <vector>
 
-namespace fcvt {
+namespace fieldcvt {
 
 //! What the reader noticed and did (reported by the CLI, never silent).
 struct MeshReadInfo {
@@ -27,4 +27,4 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info = nullptr);
 //! Writes by extension (PLY binary, OBJ, OFF, STL). Throws IOError on failure.
 void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttributes* attributes = nullptr);
 
-}  // namespace fcvt
+}  // namespace fieldcvt

@@ -1,0 +1,120 @@
+// Format dispatch by extension and the checks every format shares.
+#include "mesh_io.h"
+
+#include "errors.h"
+#include "io_detail.h"
+#include "mesh_format.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fieldcvt {
+
+namespace io_detail {
+
+void fail(const std::string& path, const std::string& what) { throw IOError(path + ": " + what); }
+
+std::string readFileBytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    if (in.bad()) fail(path, "read error");
+    return buffer.str();
+}
+
+void writeFileBytes(const std::string& path, const std::string& bytes)
+{
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) fail(path, std::string("cannot write: ") + std::strerror(errno));
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) fail(path, "write error (disk full?)");
+}
+
+}  // namespace io_detail
+
+namespace {
+
+enum class Format { Ply, Obj, Off, Stl };
+
+Format formatOf(const std::string& path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".ply") return Format::Ply;
+    if (ext == ".obj") return Format::Obj;
+    if (ext == ".off") return Format::Off;
+    if (ext == ".stl") return Format::Stl;
+    io_detail::fail(path, "unknown mesh file extension '" + ext + "' (use .ply, .obj, .off or .stl)");
+}
+
+//! Missing, directory, unreadable and empty files get their own message before any parser runs.
+void checkReadable(const std::string& path)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) io_detail::fail(path, "no such file");
+    if (fs::is_directory(status)) io_detail::fail(path, "is a directory, not a mesh file");
+    if (!std::ifstream(path, std::ios::binary)) io_detail::fail(path, std::string("cannot open: ") + std::strerror(errno));
+    if (fs::file_size(path, ec) == 0) io_detail::fail(path, "file is empty");
+}
+
+//! Every reader's result must be usable as is by the core: indices in range, some faces.
+void checkResult(const std::string& path, const TriMesh& mesh)
+{
+    if (mesh.faces.empty())
+        io_detail::fail(path, "no faces (" + std::to_string(mesh.vertexCount()) + " vertices): not a surface mesh");
+    for (const Face& f : mesh.faces)
+        for (int v : f)
+            if (v < 0 || v >= mesh.vertexCount()) io_detail::fail(path, "face vertex index " + std::to_string(v) + " out of range");
+}
+
+}  // namespace
+
+void checkMeshExtension(const std::string& path) { formatOf(path); }
+
+TriMesh readMesh(const std::string& path, MeshReadInfo* info)
+{
+    const Format format = formatOf(path);
+    checkReadable(path);
+    MeshReadInfo local;
+    MeshReadInfo& out = info ? *info : local;
+    TriMesh mesh;
+    switch (format) {
+    case Format::Ply: mesh = io_detail::readPly(path, out); break;
+    case Format::Obj: mesh = io_detail::readObj(path, io_detail::readFileBytes(path), out); break;
+    case Format::Off: mesh = io_detail::readOff(path, io_detail::readFileBytes(path), out); break;
+    case Format::Stl: mesh = io_detail::readStl(path, io_detail::readFileBytes(path), out); break;
+    }
+    checkResult(path, mesh);
+    if (out.polygonsTriangulated > 0)
+        out.notes.push_back("triangulated " + std::to_string(out.polygonsTriangulated) + " polygons");
+    return mesh;
+}
+
+void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttributes* attributes)
+{
+    const Format format = formatOf(path);
+    const VertexAttributes none;
+    const VertexAttributes& attrs = attributes ? *attributes : none;
+    for (const auto* a : {&attrs.normals, &attrs.rosy})
+        if (!a->empty() && a->size() != mesh.vertices.size())
+            io_detail::fail(path, "vertex attribute count " + std::to_string(a->size()) + " does not match the " +
+                                      std::to_string(mesh.vertexCount()) + " vertices");
+    switch (format) {
+    case Format::Ply: io_detail::writePly(path, mesh, attrs); break;
+    case Format::Obj: io_detail::writeObj(path, mesh, attrs); break;
+    case Format::Off: io_detail::writeOff(path, mesh); break;
+    case Format::Stl: io_detail::writeStl(path, mesh); break;
+    }
+}
+
+}  // namespace fieldcvt

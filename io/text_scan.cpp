@@ -1,0 +1,67 @@
+#include "text_scan.h"
+
+#include "io_detail.h"
+
+#include <charconv>
+
+namespace fieldcvt::io_detail {
+
+namespace {
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+//! from_chars rejects a leading '+', which some exporters write.
+std::string_view dropPlus(std::string_view token)
+{
+    return token.size() > 1 && token[0] == '+' ? token.substr(1) : token;
+}
+
+}  // namespace
+
+bool TextScanner::nextLine()
+{
+    tokens_.clear();
+    while (tokens_.empty() && pos_ < text_.size()) {
+        std::size_t end = text_.find('\n', pos_);
+        if (end == std::string_view::npos) end = text_.size();
+        std::string_view line = text_.substr(pos_, end - pos_);
+        pos_ = end + 1;
+        ++line_;
+        line = line.substr(0, line.find('#'));
+        std::size_t i = 0;
+        while (i < line.size()) {
+            while (i < line.size() && isSpace(line[i])) ++i;
+            const std::size_t start = i;
+            while (i < line.size() && !isSpace(line[i])) ++i;
+            if (i > start) tokens_.push_back(line.substr(start, i - start));
+        }
+    }
+    return !tokens_.empty();
+}
+
+double TextScanner::number(std::string_view token) const
+{
+    const std::string_view t = dropPlus(token);
+    double value = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (ec != std::errc() || end != t.data() + t.size())
+        fail("malformed number '" + std::string(token) + "'");
+    return value;
+}
+
+long long TextScanner::integer(std::string_view token) const
+{
+    const std::string_view t = dropPlus(token);
+    long long value = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (ec != std::errc() || end != t.data() + t.size())
+        fail("malformed integer '" + std::string(token) + "'");
+    return value;
+}
+
+void TextScanner::fail(const std::string& what) const
+{
+    io_detail::fail(path_, "line " + std::to_string(line_) + ": " + what);
+}
+
+}  // namespace fieldcvt::io_detail

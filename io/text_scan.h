@@ -1,0 +1,34 @@
+#pragma once
+// Line and token scanning for the text formats we parse ourselves (OBJ, OFF): LF or CRLF line
+// ends, '#' comments, strict locale-independent numbers, and errors that name file and line.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fieldcvt::io_detail {
+
+class TextScanner {
+public:
+    TextScanner(const std::string& path, std::string_view text) : path_(path), text_(text) {}
+
+    //! Moves to the next line that has at least one token; false at the end of the text.
+    bool nextLine();
+    const std::vector<std::string_view>& tokens() const { return tokens_; }
+    int lineNumber() const { return line_; }
+
+    //! The token as a number (the whole token must be one); fails naming the line otherwise.
+    double number(std::string_view token) const;
+    long long integer(std::string_view token) const;
+
+    //! Throws IOError("<path>: line <n>: <what>").
+    [[noreturn]] void fail(const std::string& what) const;
+
+private:
+    const std::string& path_;
+    std::string_view text_;
+    std::size_t pos_ = 0;
+    int line_ = 0;
+    std::vector<std::string_view> tokens_;
+};
+
+}  // namespace fieldcvt::io_detail

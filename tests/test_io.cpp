@@ -1,0 +1,303 @@
+// Mesh file reading and writing (io/): every format, round trips, and broken files that must
+// give an IOError, never a crash.
+#include "errors.h"
+#include "mesh_io.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fieldcvt {
+namespace {
+
+namespace fs = std::filesystem;
+
+//! A fresh directory per test for the files it writes.
+class IoTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("fcvt_test_io_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::string write(const std::string& name, const std::string& bytes) const
+    {
+        std::ofstream(path(name), std::ios::binary) << bytes;
+        return path(name);
+    }
+    static std::string bytes(const std::string& file)
+    {
+        std::ifstream in(file, std::ios::binary);
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+
+    fs::path dir_;
+};
+
+//! The unit square as two triangles, in the order every reader below must reproduce.
+void expectSquare(const TriMesh& m)
+{
+    ASSERT_EQ(m.vertexCount(), 4);
+    ASSERT_EQ(m.faceCount(), 2);
+    EXPECT_EQ(m.vertices[2], Vec3(1, 1, 0));
+    EXPECT_EQ(m.faces[0], (Face{0, 1, 2}));
+    EXPECT_EQ(m.faces[1], (Face{0, 2, 3}));
+}
+
+std::string plyHeader(const std::string& format, int vertices, int faces)
+{
+    return "ply\nformat " + format + " 1.0\nelement vertex " + std::to_string(vertices) +
+           "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(faces) +
+           "\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+std::string binarySquarePly()
+{
+    std::string s = plyHeader("binary_little_endian", 4, 2);
+    const float v[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    s.append(reinterpret_cast<const char*>(v), sizeof v);
+    for (const auto& f : {std::array<std::int32_t, 3>{0, 1, 2}, std::array<std::int32_t, 3>{0, 2, 3}}) {
+        s.push_back(3);
+        s.append(reinterpret_cast<const char*>(f.data()), 12);
+    }
+    return s;
+}
+
+std::string binarySquareStl()
+{
+    std::string s(80, ' ');
+    const std::uint32_t n = 2;
+    s.append(reinterpret_cast<const char*>(&n), 4);
+    const float tris[2][12] = {{0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 0}, {0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 0}};
+    for (const auto& t : tris) {
+        s.append(reinterpret_cast<const char*>(t), sizeof t);
+        s.append(2, '\0');
+    }
+    return s;
+}
+
+const char* asciiSquareStl =
+    "solid square\n"
+    " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 1 0\n  endloop\n endfacet\n"
+    " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 1 0\n   vertex 0 1 0\n  endloop\n endfacet\n"
+    "endsolid square\n";
+
+TEST_F(IoTest, ObjWithNormalsSlashSlashAndCrlf)
+{
+    const auto file = write("n.obj",
+                            "# exported\r\nv 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\n"
+                            "vn 0 0 1\r\nvn 0 0 1\r\nvn 0 0 1\r\nvn 0 0 1\r\n"
+                            "s off\r\nf 1//1 2//2 3//3\r\nf 1//1 3//3 4//4\r\n");
+    MeshReadInfo info;
+    expectSquare(readMesh(file, &info));
+    EXPECT_EQ(info.polygonsTriangulated, 0);
+}
+
+TEST_F(IoTest, ObjQuadsNegativeIndicesAndTexCoords)
+{
+    const auto file = write("q.OBJ",
+                            "v 0 0 0\nv 1 0 0\nv 1 1 0   # trailing comment\nv 0 1 0\nvt 0 0\n"
+                            "f -4/1 -3/1/1 -2/1/1 -1/1\n"
+                            "v 2 0 0\nf 2 5 3\n");
+    MeshReadInfo info;
+    const TriMesh m = readMesh(file, &info);
+    ASSERT_EQ(m.faceCount(), 3);
+    EXPECT_EQ(m.faces[0], (Face{0, 1, 2}));
+    EXPECT_EQ(m.faces[1], (Face{0, 2, 3}));
+    EXPECT_EQ(m.faces[2], (Face{1, 4, 2}));
+    EXPECT_EQ(info.polygonsTriangulated, 1);
+    EXPECT_FALSE(info.notes.empty());
+}
+
+TEST_F(IoTest, ObjKeepsUnreferencedVertices)
+{
+    const TriMesh m = readMesh(write("u.obj", "v 0 0 0\nv 1 0 0\nv 9 9 9\nv 1 1 0\nf 1 2 4\n"));
+    EXPECT_EQ(m.vertexCount(), 4);
+    EXPECT_EQ(m.faces[0], (Face{0, 1, 3}));
+}
+
+TEST_F(IoTest, AsciiPly)
+{
+    expectSquare(readMesh(write("a.ply", plyHeader("ascii", 4, 2) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")));
+}
+
+TEST_F(IoTest, BinaryPly) { expectSquare(readMesh(write("b.ply", binarySquarePly()))); }
+
+TEST_F(IoTest, PlyQuadIsTriangulatedAndCounted)
+{
+    MeshReadInfo info;
+    const TriMesh m = readMesh(write("q.ply", plyHeader("ascii", 4, 1) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"), &info);
+    EXPECT_EQ(m.faceCount(), 2);
+    EXPECT_EQ(info.polygonsTriangulated, 1);
+}
+
+TEST_F(IoTest, Off)
+{
+    expectSquare(readMesh(write("s.off", "OFF\n# comment\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3 255 0 0\n")));
+    MeshReadInfo info;
+    expectSquare(readMesh(write("q.off", "OFF 4 1 0\r\n0 0 0\r\n1 0 0\r\n1 1 0\r\n0 1 0\r\n4 0 1 2 3\r\n"), &info));
+    EXPECT_EQ(info.polygonsTriangulated, 1);
+}
+
+TEST_F(IoTest, StlAsciiAndBinaryWeldVertices)
+{
+    for (const auto& file : {write("a.stl", asciiSquareStl), write("b.stl", binarySquareStl())}) {
+        SCOPED_TRACE(file);
+        MeshReadInfo info;
+        expectSquare(readMesh(file, &info));
+        EXPECT_EQ(info.notes.size(), 1u);  // the welding is reported
+    }
+}
+
+TEST_F(IoTest, RoundTripEveryFormat)
+{
+    const TriMesh torus = testmesh::torus(12, 8);
+    for (const std::string ext : {"ply", "obj", "off", "stl"}) {
+        SCOPED_TRACE(ext);
+        const auto file = path("t." + ext);
+        writeMesh(file, torus);
+        const TriMesh back = readMesh(file);
+        ASSERT_EQ(back.vertexCount(), torus.vertexCount());
+        ASSERT_EQ(back.faceCount(), torus.faceCount());
+        // Corner by corner (STL renumbers vertices when it welds them, and stores floats).
+        const double tolerance = ext == "stl" ? 1e-6 : 1e-15;
+        for (int f = 0; f < torus.faceCount(); ++f)
+            for (int k = 0; k < 3; ++k)
+                ASSERT_LT((back.vertices[back.faces[f][k]] - torus.vertices[torus.faces[f][k]]).norm(), tolerance);
+        // Writing is byte-deterministic.
+        writeMesh(path("again." + ext), torus);
+        EXPECT_EQ(bytes(file), bytes(path("again." + ext)));
+    }
+}
+
+TEST_F(IoTest, PlyWithAttributes)
+{
+    const TriMesh grid = testmesh::planeGrid(2);
+    VertexAttributes attributes;
+    attributes.normals.assign(grid.vertices.size(), Vec3(0, 0, 1));
+    attributes.rosy.assign(grid.vertices.size(), Vec3(1, 0, 0));
+    const auto file = path("attr.ply");
+    writeMesh(file, grid, &attributes);
+    const std::string content = bytes(file);
+    EXPECT_NE(content.find("property float rosy_x\nproperty float rosy_y\nproperty float rosy_z\n"), std::string::npos);
+    EXPECT_NE(content.find("property float nx\n"), std::string::npos);
+    EXPECT_EQ(readMesh(file).faces, grid.faces);  // readers skip the extra properties
+
+    attributes.rosy.pop_back();
+    EXPECT_THROW(writeMesh(file, grid, &attributes), IOError);
+}
+
+TEST_F(IoTest, WriteErrors)
+{
+    const TriMesh grid = testmesh::planeGrid(1);
+    EXPECT_THROW(writeMesh(path("x.xyz"), grid), IOError);
+    for (const std::string ext : {"ply", "obj", "off", "stl"}) EXPECT_THROW(writeMesh(path("missing/dir/x." + ext), grid), IOError);
+}
+
+//! Each broken file must throw an IOError whose one-line message names the file.
+void expectIoError(const std::string& file, const std::string& fragment = "")
+{
+    try {
+        readMesh(file);
+        ADD_FAILURE() << file << " was read without error";
+    } catch (const IOError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(file), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    }
+}
+
+TEST_F(IoTest, MissingEmptyAndUnknownFiles)
+{
+    expectIoError(path("none.obj"), "no such file");
+    expectIoError(write("e.obj", ""), "empty");
+    expectIoError(write("e.ply", ""), "empty");
+    expectIoError(write("m.xyz", "v 0 0 0\n"), "extension");
+    expectIoError(dir_.string() + "/", "extension");
+    fs::create_directories(path("dir.obj"));
+    expectIoError(path("dir.obj"), "directory");
+}
+
+TEST_F(IoTest, BrokenObj)
+{
+    expectIoError(write("g.obj", "\x7f" "ELF garbage \x01\x02\n"), "no faces");
+    expectIoError(write("r.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n"), "line 4");
+    expectIoError(write("z.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 0 1 2\n"), "does not exist");
+    expectIoError(write("n.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0x\nf 1 2 3\n"), "malformed number");
+    expectIoError(write("i.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3abc\n"), "malformed integer");
+    expectIoError(write("p.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\n"), "no faces");
+    expectIoError(write("s.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"), "fewer than 3");
+}
+
+TEST_F(IoTest, BrokenOff)
+{
+    const std::string square = "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+    for (std::size_t cut : {4ul, 10ul, 20ul, square.size() - 8})
+        expectIoError(write("t" + std::to_string(cut) + ".off", square.substr(0, cut)));
+    expectIoError(write("t.off", square.substr(0, square.size() - 8)), "end of file");
+    expectIoError(write("r.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n3 0 1 3\n"), "out of range");
+    expectIoError(write("k.off", "PLY\n3 1 0\n"), "not an OFF file");
+    expectIoError(write("c.off", "OFF\n-3 1 0\n"), "count");
+    expectIoError(write("n.off", "OFF\n3 1 0\n0 0 0\n1 0 zero\n1 1 0\n3 0 1 2\n"), "line 4");
+}
+
+TEST_F(IoTest, BrokenPly)
+{
+    const std::string binary = binarySquarePly();
+    expectIoError(write("t.ply", binary.substr(0, binary.size() - 5)));
+    const std::string ascii = plyHeader("ascii", 4, 2) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+    expectIoError(write("ta.ply", ascii.substr(0, ascii.size() - 9)));
+    expectIoError(write("h.ply", binary.substr(0, 30)));
+    expectIoError(write("r.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n1 1 0\n3 0 1 7\n"));
+    expectIoError(write("g.ply", "garbage\n"));
+    expectIoError(write("p.ply", plyHeader("ascii", 3, 0) + "0 0 0\n1 0 0\n1 1 0\n"), "no faces");
+    expectIoError(write("huge.ply", plyHeader("binary_little_endian", 2000000000, 2000000000)), "truncated");
+    expectIoError(write("hugea.ply", plyHeader("ascii", 2000000000, 1) + "0 0 0\n"), "truncated");
+}
+
+TEST_F(IoTest, BrokenStl)
+{
+    const std::string binary = binarySquareStl();
+    expectIoError(write("t.stl", binary.substr(0, binary.size() - 7) + "\xff"), "truncated");
+    expectIoError(write("h.stl", binary.substr(0, 50)));
+    expectIoError(write("l.stl", "solid but no line end"));
+    const std::string ascii = asciiSquareStl;
+    expectIoError(write("ta.stl", ascii.substr(0, ascii.find("vertex 1 1 0") + 9)));
+    expectIoError(write("g.stl", "solid x\nnothing useful here\n"), "no faces");
+}
+
+struct BundledMesh {
+    const char* name;
+    int vertices;
+    int faces;
+};
+
+TEST_F(IoTest, BundledMeshes)
+{
+    for (const BundledMesh& b : {BundledMesh{"bunny.obj", 35947, 69451}, BundledMesh{"torus.obj", 3072, 6144},
+                                 BundledMesh{"fertility.off", 4494, 9000}, BundledMesh{"cylinder.off", 930, 1800},
+                                 BundledMesh{"fandisk.off", 7229, 14454}}) {
+        SCOPED_TRACE(b.name);
+        MeshReadInfo info;
+        const TriMesh m = readMesh(testmesh::resource(b.name), &info);
+        EXPECT_EQ(m.vertexCount(), b.vertices);
+        EXPECT_EQ(m.faceCount(), b.faces);
+        EXPECT_EQ(info.polygonsTriangulated, 0);
+    }
+}
+
+}  // namespace
+}  // namespace fieldcvt
