@@ -95,6 +95,7 @@ struct RestrictedVoronoiDiagram::Impl {
     std::vector<uint32_t> neighbourIndex;  // n * kStoredNeighbours, nearest first, self excluded
     std::vector<double> neighbourDist2;
     std::vector<char> duplicate;  // seed coincides with a lower-index seed: empty cell, no bisector
+    std::vector<int> vertexSeed;  // per input vertex: the seed whose cell contains it, -1 on a tie
     int storedNeighbours = 0;
 
     explicit Impl(const TriMesh& s) : surface(s)
@@ -138,6 +139,65 @@ struct RestrictedVoronoiDiagram::Impl {
                     neighbourIndex[static_cast<size_t>(i) * storedNeighbours + stored] = idx[found - 1];
                     neighbourDist2[static_cast<size_t>(i) * storedNeighbours + stored] = d2[found - 1];
                 }
+            }
+        }
+    }
+
+    // The seed whose Voronoi cell contains point p, certified: a greedy walk over the neighbour
+    // lists from `from`, then the security-radius test (no seed farther than 2|p - x_s| from
+    // x_s can be nearer to p). Falls back to the kd-tree when the stored list is too short or
+    // the walk stalls (a greedy walk on a curved surface can stop at a local minimum).
+    // Returns -1 when p is equidistant from two seeds (then its triangles are clipped).
+    int certifiedNearestSeed(int from, const Vec3& p) const
+    {
+        const int n = static_cast<int>(seeds->size());
+        int current = (from >= 0 && from < n && !duplicate[from]) ? from : 0;  // seed 0 is never a duplicate
+        double best = ((*seeds)[current] - p).squaredNorm();
+        for (int steps = 0; steps < 64; ++steps) {
+            const uint32_t* idx = neighbourIndex.data() + static_cast<size_t>(current) * storedNeighbours;
+            const double* d2 = neighbourDist2.data() + static_cast<size_t>(current) * storedNeighbours;
+            int next = current;
+            bool tie = false, certified = false;
+            for (int q = 0; q < storedNeighbours; ++q) {
+                if (next == current && d2[q] > 4.0 * best) {
+                    certified = true;
+                    break;
+                }
+                if (duplicate[idx[q]]) continue;
+                const double dp = ((*seeds)[idx[q]] - p).squaredNorm();
+                if (dp < best) best = dp, next = static_cast<int>(idx[q]), tie = false;
+                else if (dp == best && next == current) tie = true;
+            }
+            if (next != current) {
+                current = next;
+                continue;
+            }
+            if (certified || storedNeighbours == n - 1) return tie ? -1 : current;
+            break;  // stored neighbours did not reach the security radius: ask the tree
+        }
+        uint32_t idx[2];
+        double d2[2];
+        const size_t found = tree->knnSearch(p.data(), 2, idx, d2);
+        // Ties and coincident seeds go the clipping way, which resolves them.
+        if ((found >= 2 && d2[1] == d2[0]) || duplicate[idx[0]]) return -1;
+        return static_cast<int>(idx[0]);
+    }
+
+    void computeVertexSeeds()
+    {
+        const int n = surface.vertexCount();
+        vertexSeed.resize(n);
+        constexpr int kVerticesPerChunk = 1024;
+        const int chunkCount = (n + kVerticesPerChunk - 1) / kVerticesPerChunk;
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int c = 0; c < chunkCount; ++c) {
+            // Consecutive vertices are usually close: each walk starts at the previous answer.
+            int previous = -1;
+            const int end = std::min(n, (c + 1) * kVerticesPerChunk);
+            for (int v = c * kVerticesPerChunk; v < end; ++v) {
+                const int s = certifiedNearestSeed(previous, surface.vertices[v]);
+                vertexSeed[v] = s;
+                if (s >= 0) previous = s;
             }
         }
     }
@@ -245,13 +305,26 @@ struct RestrictedVoronoiDiagram::Impl {
         const Vec3& nrm = unitNormals[t];
         if (nrm.isZero()) return;  // zero-area face: nothing to integrate
         const Vec3 a = surface.vertices[f[0]], b = surface.vertices[f[1]], c = surface.vertices[f[2]];
+        // Convex cell, convex triangle: when one seed's cell holds all three corners it holds
+        // the whole triangle, and no clipping is needed. This is most triangles.
+        const int s0 = vertexSeed[f[0]], s1 = vertexSeed[f[1]], s2 = vertexSeed[f[2]];
+        if (s0 >= 0 && s0 == s1 && s1 == s2) {
+            Polygon whole;
+            whole.size = 3;
+            whole.point[0] = a, whole.point[1] = b, whole.point[2] = c;
+            integrate(whole, s0, nrm, out);
+            return;
+        }
+        // Otherwise start from a seed whose cell meets the triangle: the cells of its corners,
+        // then (only on exact ties) the seeds nearest to the centroid.
         const Vec3 centroid = (a + b + c) / 3.0;
-        // The nearest seed's cell contains the centroid; its polygon is empty only if that seed
-        // coincides with a lower-index one, so a few nearest candidates are enough.
         constexpr int kStartCandidates = 8;
         uint32_t candidate[kStartCandidates];
         double candidateDist2[kStartCandidates];
-        const int candidates = static_cast<int>(tree->knnSearch(centroid.data(), kStartCandidates, candidate, candidateDist2));
+        int candidates = 0;
+        for (int sv : {s0, s1, s2})
+            if (sv >= 0) candidate[candidates++] = static_cast<uint32_t>(sv);
+        bool treeQueried = false;
         int nextCandidate = 0;
         bool anyPiece = false;
 
@@ -259,7 +332,13 @@ struct RestrictedVoronoiDiagram::Impl {
         scratch.visited.clear();
         while (true) {
             if (scratch.stack.empty()) {
-                if (anyPiece || nextCandidate >= candidates) break;
+                if (anyPiece) break;
+                if (nextCandidate >= candidates) {
+                    if (treeQueried) break;
+                    candidates = static_cast<int>(tree->knnSearch(centroid.data(), kStartCandidates, candidate, candidateDist2));
+                    nextCandidate = 0;
+                    treeQueried = true;
+                }
                 const int start = static_cast<int>(candidate[nextCandidate++]);
                 if (std::find(scratch.visited.begin(), scratch.visited.end(), start) != scratch.visited.end()) continue;
                 scratch.stack.push_back(start);
@@ -325,6 +404,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
     Impl& m = *impl_;
     m.seeds = &seeds;
     m.buildNeighbourLists();
+    m.computeVertexSeeds();
 
     const int faceCount = m.surface.faceCount();
     const int chunkCount = static_cast<int>(m.chunks.size());
