@@ -49,7 +49,7 @@ void checkPlySize(const std::string& path, std::uintmax_t fileSize)
             words >> name >> n;
             if (!words || n < 0) return;  // malformed header: vcglib reports it
             count = n;
-            elements += (elements.empty() ? "" : ", ") + std::to_string(static_cast<long long>(n)) + " " + name;
+            elements += (elements.empty() ? "" : ", ") + std::to_string(static_cast<long long>(n)) + " '" + name + "'";
         } else if (keyword == "property") {
             std::string type;
             words >> type;
@@ -58,7 +58,7 @@ void checkPlySize(const std::string& path, std::uintmax_t fileSize)
             minimumBody += count * (ascii ? 2 : bytes);
         } else if (keyword == "end_header") {
             if (headerBytes + minimumBody > static_cast<long double>(fileSize))
-                fail(path, "truncated PLY file: its header announces " + elements + " but the file has only " +
+                fail(path, "truncated PLY file: its header announces " + elements + " elements but the file has only " +
                                std::to_string(fileSize) + " bytes");
             return;
         }

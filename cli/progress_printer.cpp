@@ -1,0 +1,48 @@
+#include "progress_printer.h"
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace fieldcvt::cli {
+
+ProgressPrinter::ProgressPrinter(bool quiet) : quiet_(quiet), terminal_(::isatty(STDERR_FILENO) == 1) {}
+
+Progress ProgressPrinter::callback()
+{
+    if (quiet_) return {};
+    return [this](const std::string& stage, double percent) {
+        report(stage, percent);
+        return true;
+    };
+}
+
+void ProgressPrinter::report(const std::string& stage, double percent)
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    percent = percent < 0 ? 0 : percent > 100 ? 100 : percent;
+    const bool newStage = stage != stage_;
+    if (terminal_) {
+        const int tenths = static_cast<int>(percent * 10);
+        if (!newStage && tenths == shown_) return;
+        shown_ = tenths;
+        // \33[K clears what a longer previous stage name left on the line.
+        std::fprintf(stderr, "\rfcvt: %-10s %5.1f %%\33[K", stage.c_str(), percent);
+        lineOpen_ = true;
+    } else {
+        const int tens = static_cast<int>(percent / 10) * 10;
+        if (!newStage && tens <= shown_) return;
+        shown_ = tens;
+        std::fprintf(stderr, "fcvt: %s %d %%\n", stage.c_str(), static_cast<int>(percent));
+    }
+    stage_ = stage;
+    std::fflush(stderr);
+}
+
+void ProgressPrinter::finish()
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (lineOpen_) std::fputc('\n', stderr);
+    lineOpen_ = false;
+}
+
+}  // namespace fieldcvt::cli

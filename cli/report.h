@@ -1,0 +1,21 @@
+#pragma once
+// The JSON vocabulary of the CLI, shared by `fcvt remesh --report` and `fcvt metrics --json`
+// (other tooling reads these key names: keep them stable).
+#include "metrics.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace fieldcvt::cli {
+
+//! Exactly q_min q_avg theta_min theta_min_avg theta_max pct_lt30 pct_gt90 v6_pct d_rms d_h;
+//! NaN (e.g. distances without a reference) becomes null.
+nlohmann::ordered_json metricsJson(const QualityMetrics& metrics);
+//! genus, boundary_loops, components, manifold, orientable (+ non-manifold counts).
+nlohmann::ordered_json topologyJson(const TopologySummary& topology);
+
+//! Writes `json` (indented, trailing newline) to `path`; throws IOError on failure.
+void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json);
+
+}  // namespace fieldcvt::cli

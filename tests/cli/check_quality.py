@@ -1,0 +1,63 @@
+"""Remeshes a bundled mesh with fcvt (lambda = 0, 130 CVT iterations) and checks the issue's
+quality bars three ways: the run's JSON report, `fcvt metrics --ref` on the written file, and a
+pure-Python measurement of that file.
+Usage: check_quality.py FCVT INPUT VERTICES WORK_DIR [BAR ...]
+Bars: KEY>=X or KEY<=X on the metrics (q_avg, theta_min, pct_lt30, v6_pct, d_h, ...),
+keep_genus, manifold, boundary_loops=N, vertex_tolerance=FRACTION."""
+import json
+import os
+import sys
+
+from fcvt_check import check, finish, measure, metrics_json, read_ply, run_ok
+
+fcvt, source, vertices, work = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+bars = sys.argv[5:]
+os.makedirs(work, exist_ok=True)
+name = os.path.splitext(os.path.basename(source))[0]
+out = os.path.join(work, f"{name}_{vertices}.ply")
+report_path = os.path.join(work, f"{name}_{vertices}.json")
+
+print(run_ok([fcvt, "remesh", source, out, "--vertices", str(vertices), "--lambda", "0",
+              "--cvt-iterations", "130", "--report", report_path]))
+with open(report_path) as f:
+    report = json.load(f)
+measured = metrics_json(fcvt, out, ref=source)
+mesh_vertices, mesh_faces = read_ply(out)
+python = measure(mesh_vertices, mesh_faces)
+print("report metrics:", json.dumps(report["metrics"]))
+print("fcvt metrics --ref:", json.dumps(measured))
+print("python:", json.dumps(python))
+print("topology in/out:", json.dumps(report["input"]), json.dumps(report["output"]))
+
+# The three measurements agree (the report's distances use other random samples: looser).
+check(report["vertices"] == len(mesh_vertices) and report["faces"] == len(mesh_faces), "report counts vs file")
+for key in ["q_avg", "theta_min", "pct_lt30", "v6_pct"]:
+    check(abs(report["metrics"][key] - measured[key]) < 1e-6, f"{key}: report {report['metrics'][key]} vs metrics {measured[key]}")
+    check(abs(python[key] - measured[key]) < 1e-6 * max(1.0, abs(python[key])), f"{key}: python {python[key]} vs metrics {measured[key]}")
+
+for bar in bars:
+    if ">=" in bar or "<=" in bar:
+        op = ">=" if ">=" in bar else "<="
+        key, bound = bar.split(op)
+        value = measured[key]
+        ok = value is not None and (value >= float(bound) if op == ">=" else value <= float(bound))
+        check(ok, f"{name}: {key} = {value}, bar {op} {bound}")
+    elif bar == "keep_genus":
+        check(report["output"]["genus"] == report["input"]["genus"],
+              f"{name}: genus {report['output']['genus']}, input has {report['input']['genus']}")
+        check(python["genus_if_connected"] == report["input"]["genus"] or report["output"]["components"] != 1,
+              f"{name}: python genus {python['genus_if_connected']}")
+    elif bar == "manifold":
+        check(report["output"]["manifold"] and python["edges_manifold"], f"{name}: output not manifold")
+    elif bar.startswith("boundary_loops="):
+        loops = int(bar.split("=")[1])
+        check(report["output"]["boundary_loops"] == loops and python["boundary_loops"] == loops,
+              f"{name}: {report['output']['boundary_loops']} boundary loops (python {python['boundary_loops']}), expected {loops}")
+    elif bar.startswith("vertex_tolerance="):
+        tolerance = float(bar.split("=")[1])
+        check(abs(len(mesh_vertices) - vertices) <= tolerance * vertices,
+              f"{name}: {len(mesh_vertices)} vertices, target {vertices} +- {tolerance * 100} %")
+    else:
+        raise SystemExit(f"unknown bar {bar}")
+
+finish()

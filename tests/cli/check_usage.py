@@ -1,0 +1,95 @@
+"""fcvt usage and runtime errors: exit code 2 for usage errors, 1 for runtime failures, and
+exactly one line "fcvt: error: ..." on stderr, nothing on stdout; help and version succeed.
+Usage: check_usage.py FCVT RESOURCES_DIR WORK_DIR"""
+import os
+import sys
+
+from fcvt_check import check, finish, run
+
+fcvt, resources, work = sys.argv[1], sys.argv[2], sys.argv[3]
+os.makedirs(work, exist_ok=True)
+torus = os.path.join(resources, "torus.obj")
+out = os.path.join(work, "out.ply")
+
+
+def write(name, data):
+    path = os.path.join(work, name)
+    with open(path, "wb") as f:
+        f.write(data)
+    return path
+
+
+def expect_error(args, code, fragment=""):
+    got, stdout, stderr = run([fcvt] + args, timeout=300)
+    lines = stderr.splitlines()
+    label = " ".join(args)
+    check(got == code, f"'{label}': exit code {got}, expected {code}")
+    check(len(lines) == 1 and lines[0].startswith("fcvt: error: "), f"'{label}': stderr is not one error line: {stderr!r}")
+    check(fragment in stderr, f"'{label}': stderr {stderr!r} does not mention {fragment!r}")
+    check(stdout == "", f"'{label}': unexpected stdout {stdout!r}")
+
+
+# Usage errors: exit code 2.
+for args, fragment in [
+    ([], "no command"),
+    (["frobnicate"], "unknown command"),
+    (["remesh", torus, out], "--vertices"),
+    (["remesh", torus, "--vertices", "100"], "input and an output"),
+    (["remesh", torus, out, "--vertices", "2"], "--vertices"),
+    (["remesh", torus, out, "--vertices", "-100"], "--vertices"),
+    (["remesh", torus, out, "--vertices", "12abc"], "12abc"),
+    (["remesh", torus, out, "--vertices", "1e3"], "1e3"),
+    (["remesh", torus, out, "--vertices", ""], "--vertices"),
+    (["remesh", torus, out, "--vertices", "99999999999999999999"], "--vertices"),
+    (["remesh", torus, out, "--vertices"], "needs a value"),
+    (["remesh", torus, out, "--vertices", "100", "--lambda", "-1"], "--lambda"),
+    (["remesh", torus, out, "--vertices", "100", "--lambda", "nan"], "--lambda"),
+    (["remesh", torus, out, "--vertices", "100", "--lambda", "inf"], "--lambda"),
+    (["remesh", torus, out, "--vertices", "100", "--lambda", "0.5x"], "--lambda"),
+    (["remesh", torus, out, "--vertices", "100", "--cvt-iterations", "-1"], "--cvt-iterations"),
+    (["remesh", torus, out, "--vertices", "100", "--fcvt-iterations", "-3"], "--fcvt-iterations"),
+    (["remesh", torus, out, "--vertices", "100", "--seed", "-1"], "--seed"),
+    (["remesh", torus, out, "--vertices", "100", "--threads", "-2"], "--threads"),
+    (["remesh", torus, out, "--vertices", "100", "--bogus"], "--bogus"),
+    (["remesh", torus, out, "--vertices", "100", "--vertices", "200"], "twice"),
+    (["remesh", torus, out, "--vertices", "100", "--quiet=yes"], "--quiet"),
+    (["metrics"], "exactly one"),
+    (["metrics", torus, "--ref"], "needs a value"),
+    (["metrics", torus, "-x"], "-x"),
+]:
+    expect_error(args, 2, fragment)
+
+# Runtime failures: exit code 1, the message names the file.
+garbage = write("garbage.obj", b"\x00\x01garbage\nf 1 2 3\n")
+truncated = write("truncated.off", b"OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n")
+truncated_ply = write("truncated.ply", b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                      b"property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                      b"end_header\n\x00\x00")
+empty = write("empty.stl", b"")
+cloud = write("cloud.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\n")
+nan_mesh = write("nan.obj", b"v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n")
+missing = os.path.join(work, "missing.ply")
+for args, fragment in [
+    (["remesh", missing, out, "--vertices", "100"], missing),
+    (["remesh", garbage, out, "--vertices", "100"], garbage),
+    (["remesh", truncated, out, "--vertices", "100"], truncated),
+    (["remesh", truncated_ply, out, "--vertices", "100"], truncated_ply),
+    (["remesh", empty, out, "--vertices", "100"], empty),
+    (["remesh", cloud, out, "--vertices", "100"], cloud),
+    (["remesh", torus, os.path.join(work, "out.xyz"), "--vertices", "100"], "out.xyz"),
+    (["remesh", nan_mesh, out, "--vertices", "100", "--quiet"], ""),
+    (["remesh", torus, os.path.join(work, "no", "such", "dir", "out.ply"), "--vertices", "100", "--quiet"], "out.ply"),
+    (["metrics", missing], missing),
+    (["metrics", torus, "--ref", truncated], truncated),
+    (["metrics", work], work),
+]:
+    expect_error(args, 1, fragment)
+
+# Help and version.
+for args, text in [(["--help"], "Usage: fcvt <command>"), (["-h"], "Usage: fcvt <command>"),
+                   (["remesh", "--help"], "--cvt-iterations"), (["metrics", "--help"], "--ref"),
+                   (["--version"], "fcvt ")]:
+    code, stdout, stderr = run([fcvt] + args)
+    check(code == 0 and text in stdout and stderr == "", f"'{' '.join(args)}': exit {code}, stdout {stdout[:60]!r}")
+
+finish()

@@ -1,0 +1,144 @@
+"""Helpers shared by the end-to-end CLI tests: run fcvt, read its PLY output, and measure a
+triangle mesh in pure Python, independently of the C++ metrics."""
+import json
+import math
+import struct
+import subprocess
+import sys
+
+METRIC_KEYS = ["q_min", "q_avg", "theta_min", "theta_min_avg", "theta_max",
+               "pct_lt30", "pct_gt90", "v6_pct", "d_rms", "d_h"]
+
+failures = []
+
+
+def check(condition, message):
+    """Records a failed expectation (all are reported, not just the first)."""
+    if not condition:
+        failures.append(message)
+        print("FAIL: " + message)
+    return condition
+
+
+def finish():
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        sys.exit(1)
+    print("all checks passed")
+
+
+def run(args, timeout=900):
+    """Runs a command; returns (exit code, stdout, stderr) as text."""
+    p = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+    return p.returncode, p.stdout, p.stderr
+
+
+def run_ok(args, timeout=900):
+    code, out, err = run(args, timeout)
+    if code != 0:
+        print(err, file=sys.stderr)
+        raise SystemExit(f"command failed with exit code {code}: {' '.join(args)}")
+    return out
+
+
+def metrics_json(fcvt, mesh, ref=None):
+    args = [fcvt, "metrics", mesh, "--json"] + (["--ref", ref] if ref else [])
+    return json.loads(run_ok(args))
+
+
+def read_ply(path):
+    """Reads the binary little-endian PLY that fcvt writes: double x y z (+ float extras),
+    then uchar-int triangle lists. Returns (vertices, faces)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").splitlines()
+    assert header[1] == "format binary_little_endian 1.0", header[1]
+    nv = nf = 0
+    vertex_format = "<"
+    element = None
+    for line in header:
+        words = line.split()
+        if words[0] == "element":
+            element = words[1]
+            if element == "vertex":
+                nv = int(words[2])
+            elif element == "face":
+                nf = int(words[2])
+        elif words[0] == "property" and element == "vertex":
+            vertex_format += {"double": "d", "float": "f"}[words[1]]
+    size = struct.calcsize(vertex_format)
+    vertices = [struct.unpack_from(vertex_format, data, end + i * size)[:3] for i in range(nv)]
+    offset = end + nv * size
+    faces = []
+    for _ in range(nf):
+        count, a, b, c = struct.unpack_from("<Biii", data, offset)
+        assert count == 3
+        faces.append((a, b, c))
+        offset += 13
+    return vertices, faces
+
+
+def _sub(p, q):
+    return (p[0] - q[0], p[1] - q[1], p[2] - q[2])
+
+
+def _norm(v):
+    return math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+
+
+def _angle(u, v):
+    c = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / (_norm(u) * _norm(v))
+    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
+
+
+def measure(vertices, faces):
+    """Q_avg, theta_min, %<30, V6% and topology, computed the paper's way (Q = 2 sqrt(3) |t| / (s h))."""
+    q_sum, theta_min, lt30 = 0.0, 180.0, 0
+    edges = {}
+    for f in faces:
+        p = [vertices[i] for i in f]
+        lengths = [_norm(_sub(p[(k + 1) % 3], p[k])) for k in range(3)]
+        cross_u, cross_v = _sub(p[1], p[0]), _sub(p[2], p[0])
+        cross = (cross_u[1] * cross_v[2] - cross_u[2] * cross_v[1],
+                 cross_u[2] * cross_v[0] - cross_u[0] * cross_v[2],
+                 cross_u[0] * cross_v[1] - cross_u[1] * cross_v[0])
+        area = 0.5 * _norm(cross)
+        s, h = 0.5 * sum(lengths), max(lengths)
+        q_sum += 2 * math.sqrt(3) * area / (s * h)
+        angles = [_angle(_sub(p[(k + 1) % 3], p[k]), _sub(p[(k + 2) % 3], p[k])) for k in range(3)]
+        theta_min = min(theta_min, min(angles))
+        lt30 += min(angles) < 30
+        for k in range(3):
+            e = tuple(sorted((f[k], f[(k + 1) % 3])))
+            edges[e] = edges.get(e, 0) + 1
+    used = sorted({v for f in faces for v in f})
+    boundary_edges = [e for e, n in edges.items() if n == 1]
+    boundary_vertices = {v for e in boundary_edges for v in e}
+    valence = {}
+    for a, b in edges:
+        valence[a] = valence.get(a, 0) + 1
+        valence[b] = valence.get(b, 0) + 1
+    interior = [v for v in used if v not in boundary_vertices]
+    # Boundary loops: connected components of the boundary edge graph (manifold boundaries).
+    parent = {}
+
+    def find(x):
+        while parent.setdefault(x, x) != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    for a, b in boundary_edges:
+        parent[find(a)] = find(b)
+    loops = len({find(v) for v in boundary_vertices})
+    chi = len(used) - len(edges) + len(faces)
+    return {
+        "q_avg": q_sum / len(faces),
+        "theta_min": theta_min,
+        "pct_lt30": 100.0 * lt30 / len(faces),
+        "v6_pct": 100.0 * sum(valence[v] == 6 for v in interior) / max(1, len(interior)),
+        "edges_manifold": all(n <= 2 for n in edges.values()),
+        "boundary_loops": loops,
+        "genus_if_connected": (2 - chi - loops) // 2,
+    }

@@ -1,0 +1,34 @@
+# End-to-end tests of the `fcvt` command (scripts in tests/cli/, python3 only). The quality bars
+# are those of issue 2 (lambda = 0, 130 CVT iterations); they are labelled slow but run by default.
+if(NOT TARGET fcvt)
+  return()
+endif()
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+
+set(FCVT_CLI_SCRIPTS ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+set(FCVT_CLI_WORK ${CMAKE_CURRENT_BINARY_DIR}/cli_work)
+set(FCVT_RESOURCES ${PROJECT_SOURCE_DIR}/resources)
+
+add_test(NAME cli_usage_errors
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_usage.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES} ${FCVT_CLI_WORK}/usage)
+add_test(NAME cli_metrics_json
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_metrics_json.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES})
+
+set(FCVT_CLOSED_BARS "q_avg>=0.93" "theta_min>=33" "pct_lt30<=0" "v6_pct>=84" "d_h<=0.005" keep_genus manifold)
+add_test(NAME cli_quality_fertility_3000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 3000
+          ${FCVT_CLI_WORK}/fertility ${FCVT_CLOSED_BARS})
+add_test(NAME cli_quality_torus_1000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/torus.obj 1000
+          ${FCVT_CLI_WORK}/torus ${FCVT_CLOSED_BARS})
+add_test(NAME cli_quality_bunny_5000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/bunny.obj 5000
+          ${FCVT_CLI_WORK}/bunny "q_avg>=0.93" "theta_min>=20" "v6_pct>=84" "d_h<=0.006" boundary_loops=5
+          vertex_tolerance=0.01)
+add_test(NAME cli_determinism
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_determinism.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 2000
+          ${FCVT_CLI_WORK}/determinism)
+
+set_tests_properties(cli_usage_errors cli_metrics_json PROPERTIES LABELS "cli" TIMEOUT 600)
+set_tests_properties(cli_quality_fertility_3000 cli_quality_torus_1000 cli_quality_bunny_5000 cli_determinism
+  PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
