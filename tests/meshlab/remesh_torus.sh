@@ -37,14 +37,16 @@ awk -v n="$vn" -v t="$target" 'BEGIN { d = n - t; if (d < 0) d = -d; exit !(d <=
 echo "output: $vn vertices (target $target)"
 
 if [ -n "$cli" ]; then
-  "$cli" metrics "$out" --json > "$work/out/metrics.json" || fail "fcvt metrics failed on $out"
+  "$cli" metrics "$out" --ref "$FCVT_SOURCE_DIR/resources/torus.obj" --json > "$work/out/metrics.json" \
+    || fail "fcvt metrics failed on $out"
   cat "$work/out/metrics.json"
   python3 - "$work/out/metrics.json" <<'PY' || fail "quality floors not met"
 import json, sys
 m = json.load(open(sys.argv[1]))
 m = m.get("metrics", m)  # the bare metrics object, or a report that wraps it
 floors = {"q_avg": (">=", 0.9), "q_min": (">", 0.0), "theta_min": (">=", 20.0),
-          "pct_lt30": ("<=", 1.0), "v6_pct": (">=", 70.0)}
+          "pct_lt30": ("<=", 1.0), "v6_pct": (">=", 70.0),
+          "d_h": ("<=", 0.01)}  # fraction of the input's bounding-box diagonal
 bad = []
 for key, (op, bound) in floors.items():
     v = m.get(key)
