@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "sampling.h"
+#include "boundary.h"
 
 #include <LBFGS.h>
 
@@ -33,6 +34,28 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
         }
         (void)relocated;
     }
+}
+
+int relaxBoundarySamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
+                         const std::vector<Segment>& border, int iterations)
+{
+    if (border.empty()) return 0;
+    int onBorder = 0;
+    RvdOptions options;
+    options.boundary = true;
+    for (int it = 0; it < iterations; ++it) {
+        const RvdResult& rvd = energy.diagram(seeds, options);
+        onBorder = 0;
+        for (size_t i = 0; i < seeds.size(); ++i) {
+            if (rvd.boundaryLength[i] > 0) {
+                seeds[i] = closestPointOnSegments(rvd.boundaryMoment[i] / rvd.boundaryLength[i], border);
+                ++onBorder;
+            } else if (rvd.mass[i] > 0) {
+                seeds[i] = rvd.moment[i] / rvd.mass[i];
+            }
+        }
+    }
+    return onBorder;
 }
 
 namespace {

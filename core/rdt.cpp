@@ -1,7 +1,6 @@
 #include "rdt.h"
 
 #include <algorithm>
-#include <map>
 
 namespace fieldcvt {
 

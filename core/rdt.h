@@ -24,4 +24,5 @@ struct RdtResult {
 RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
                      const ClosestPointTree& surface);
 
+
 }  // namespace fieldcvt

@@ -7,6 +7,7 @@
 #include "optimize.h"
 #include "rdt.h"
 #include "sampling.h"
+#include "boundary.h"
 
 #include <omp.h>
 
@@ -27,7 +28,7 @@ void validate(const RemeshParams& p)
     if (p.vertexCount < 4) throw InvalidInputError("vertex count must be at least 4 (got " + std::to_string(p.vertexCount) + ")");
     if (p.vertexCount > 50000000) throw InvalidInputError("vertex count " + std::to_string(p.vertexCount) + " is too large (at most 50000000)");
     if (!std::isfinite(p.lambda) || p.lambda < 0) throw InvalidInputError("lambda must be a finite number >= 0");
-    if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0)
+    if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
         throw InvalidInputError("iteration counts must be >= 0");
     if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
 }
@@ -122,6 +123,11 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         stage = "cvt";
         OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{params.cvtIterations});
         result.warnings.insert(result.warnings.end(), stats.warnings.begin(), stats.warnings.end());
+    });
+
+    pipeline.run("boundary", [&] {
+        stage = "boundary";
+        relaxBoundarySamples(energy, seeds, boundarySegments(surface), params.boundaryIterations);
     });
 
     pipeline.run("rdt", [&] {

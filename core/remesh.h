@@ -17,6 +17,9 @@ struct RemeshParams {
     int lloydIterations = 5;      //!< Lloyd warm-up steps before L-BFGS (§5, uneven sampling)
     int cvtIterations = 130;      //!< L-BFGS iterations on E_CVT (§5)
     int fcvtIterations = 0;       //!< L-BFGS iterations on E_CVT + lambda E_field (§5)
+    //! Open surfaces: Lloyd steps after the optimisation that put the samples of border cells
+    //! on the border (1D CVT along it), so the output's boundary follows the input's.
+    int boundaryIterations = 10;
     std::uint64_t seed = 1;       //!< seed of the initial sampling; same seed, same output
     int threads = 0;              //!< OpenMP threads, 0 = runtime default
     bool computeDistances = true; //!< also compute d_RMS / d_H against the input in the report

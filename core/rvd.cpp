@@ -31,8 +31,8 @@ struct SeedCloud {
 using SeedTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SeedCloud>, SeedCloud, 3, uint32_t>;
 
 // A convex polygon inside one input triangle. label[k] names what created the edge from
-// vertex k to vertex k+1: a seed index j >= 0 for the bisector of (i, j), or -1 for the
-// triangle's own border. A convex polygon gains at most one vertex per clipping plane.
+// vertex k to vertex k+1: a seed index j >= 0 for the bisector of (i, j), or -1 - e for the
+// triangle's own edge e (from its corner e to corner e+1). A convex polygon gains at most one vertex per clipping plane.
 constexpr int kMaxPolygonVertices = 96;
 struct Polygon {
     int size = 0;
@@ -48,6 +48,8 @@ struct CellPiece {
     double mass;
     Vec3 moment;
     double energy;
+    double boundaryLength;
+    Vec3 boundaryMoment;
 };
 
 struct ChunkOutput {
@@ -85,6 +87,7 @@ std::array<int, 3> canonicalTriangle(int a, int b, int c)
 struct RestrictedVoronoiDiagram::Impl {
     const TriMesh& surface;
     std::vector<Vec3> unitNormals;  // per input face
+    std::vector<unsigned char> borderEdges;  // per input face: bit e set if edge e has no other face
     std::vector<ChunkOutput> chunks;
     std::vector<Scratch> scratch;
 
@@ -107,6 +110,19 @@ struct RestrictedVoronoiDiagram::Impl {
             unitNormals[f] = len > 0 ? Vec3(n / len) : Vec3::Zero();
         }
         chunks.resize((s.faces.size() + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
+
+        std::vector<std::pair<std::pair<int, int>, int>> edges;  // (sorted corners) -> face * 3 + e
+        edges.reserve(s.faces.size() * 3);
+        for (int f = 0; f < s.faceCount(); ++f)
+            for (int e = 0; e < 3; ++e) edges.push_back({std::minmax(s.faces[f][e], s.faces[f][(e + 1) % 3]), 3 * f + e});
+        std::sort(edges.begin(), edges.end());
+        borderEdges.assign(s.faces.size(), 0);
+        for (size_t r = 0; r < edges.size();) {
+            size_t q = r;
+            while (q < edges.size() && edges[q].first == edges[r].first) ++q;
+            if (q - r == 1) borderEdges[edges[r].second / 3] |= static_cast<unsigned char>(1u << (edges[r].second % 3));
+            r = q;
+        }
     }
 
     void buildNeighbourLists()
@@ -312,7 +328,8 @@ struct RestrictedVoronoiDiagram::Impl {
             Polygon whole;
             whole.size = 3;
             whole.point[0] = a, whole.point[1] = b, whole.point[2] = c;
-            integrate(whole, s0, nrm, out);
+            whole.label[0] = -1, whole.label[1] = -2, whole.label[2] = -3;
+            integrate(whole, s0, t, out);
             return;
         }
         // Otherwise start from a seed whose cell meets the triangle: the cells of its corners,
@@ -349,12 +366,12 @@ struct RestrictedVoronoiDiagram::Impl {
             Polygon poly;
             poly.size = 3;
             poly.point[0] = a, poly.point[1] = b, poly.point[2] = c;
-            poly.label[0] = poly.label[1] = poly.label[2] = -1;
+            poly.label[0] = -1, poly.label[1] = -2, poly.label[2] = -3;
             clipToCell(poly, i, scratch, out.clipped);
             if (poly.size < 3) continue;
             anyPiece = true;
 
-            integrate(poly, i, nrm, out);
+            integrate(poly, i, t, out);
             for (int k = 0; k < poly.size; ++k) {
                 const int j = poly.label[k];
                 if (j < 0) continue;
@@ -377,9 +394,11 @@ struct RestrictedVoronoiDiagram::Impl {
     }
 
     // Accumulates mass, first moment and ∫||x - x_i||² over the polygon (eq. 1, ρ = 1) by a
-    // fan of triangles; areas are signed along the input face normal.
-    void integrate(const Polygon& poly, int i, const Vec3& nrm, ChunkOutput& out) const
+    // fan of triangles; areas are signed along the input face normal. Also the length and
+    // moment of the input's border inside it.
+    void integrate(const Polygon& poly, int i, int face, ChunkOutput& out) const
     {
+        const Vec3& nrm = unitNormals[face];
         const Vec3& xi = (*seeds)[i];
         const Vec3 q0 = poly.point[0] - xi;
         double mass = 0, energy = 0;
@@ -391,7 +410,20 @@ struct RestrictedVoronoiDiagram::Impl {
             moment += area / 3.0 * (q0 + q1 + q2);
             energy += area / 6.0 * (q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm() + q0.dot(q1) + q1.dot(q2) + q2.dot(q0));
         }
-        out.pieces.push_back({i, mass, moment + mass * xi, energy});
+        double borderLength = 0;
+        Vec3 borderMoment = Vec3::Zero();
+        if (borderEdges[face]) {
+            for (int k = 0; k < poly.size; ++k) {
+                const int label = poly.label[k];
+                if (label >= 0 || !(borderEdges[face] & (1u << (-1 - label)))) continue;
+                const Vec3& p0 = poly.point[k];
+                const Vec3& p1 = poly.point[(k + 1) % poly.size];
+                const double len = (p1 - p0).norm();
+                borderLength += len;
+                borderMoment += 0.5 * len * (p0 + p1);
+            }
+        }
+        out.pieces.push_back({i, mass, moment + mass * xi, energy, borderLength, borderMoment});
     }
 };
 
@@ -426,6 +458,8 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
     result.mass.assign(n, 0.0);
     result.moment.assign(n, Vec3::Zero());
     result.energy.assign(n, 0.0);
+    result.boundaryLength.assign(options.boundary ? n : 0, 0.0);
+    result.boundaryMoment.assign(options.boundary ? n : 0, Vec3::Zero());
     result.edges.clear();
     result.triangles.clear();
     result.clippedPolygons = 0;
@@ -434,6 +468,10 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
             result.mass[p.seed] += p.mass;
             result.moment[p.seed] += p.moment;
             result.energy[p.seed] += p.energy;
+            if (options.boundary) {
+                result.boundaryLength[p.seed] += p.boundaryLength;
+                result.boundaryMoment[p.seed] += p.boundaryMoment;
+            }
         }
         result.clippedPolygons += out.clipped;
         if (options.edges) result.edges.insert(result.edges.end(), out.edges.begin(), out.edges.end());

@@ -15,6 +15,7 @@ namespace fieldcvt {
 struct RvdOptions {
     bool edges = false;      //!< fill RvdResult::edges
     bool triangles = false;  //!< fill RvdResult::triangles
+    bool boundary = false;   //!< fill RvdResult::boundaryLength / boundaryMoment
 };
 
 //! An RVD edge shared by the cells of seeds i < j, and its total length on the surface.
@@ -27,6 +28,10 @@ struct RvdResult {
     std::vector<double> mass;    //!< m_i = area of the restricted cell (times density)
     std::vector<Vec3> moment;    //!< ∫ x dσ over the cell; centroid c_i = moment_i / m_i
     std::vector<double> energy;  //!< ∫ ||x - x_i||² dσ over the cell (eq. 1)
+    //! Length and first moment ∫ x ds of the input's border inside each cell (the 1D restricted
+    //! Voronoi diagram of the boundary curves; empty unless RvdOptions::boundary).
+    std::vector<double> boundaryLength;
+    std::vector<Vec3> boundaryMoment;
     std::vector<RvdEdge> edges;  //!< sorted by (i, j), one entry per neighbouring pair
     //! One triangle (i, j, k) per RVD vertex where three cells meet, oriented like the input
     //! surface, listed once (sorted, duplicates removed).

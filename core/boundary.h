@@ -1,0 +1,19 @@
+#pragma once
+// The input's open boundary as a set of segments, and the closest point on it. Samples of the
+// cells that meet the border are kept on it (optimize.h: relaxBoundarySamples).
+#include "mesh.h"
+
+#include <utility>
+#include <vector>
+
+namespace fieldcvt {
+
+using Segment = std::pair<Vec3, Vec3>;
+
+//! The edges of `mesh` that have exactly one face, as segments.
+std::vector<Segment> boundarySegments(const TriMesh& mesh);
+
+//! Closest point to p on a set of segments (p itself if the set is empty).
+Vec3 closestPointOnSegments(const Vec3& p, const std::vector<Segment>& segments);
+
+}  // namespace fieldcvt
