@@ -41,7 +41,7 @@ struct Polygon {
 };
 
 constexpr int kTrianglesPerChunk = 256;  // fixed, so results do not depend on the thread count
-constexpr int kStoredNeighbours = 20;    // per seed, enough for the security radius almost always
+constexpr int kStoredNeighbours = 12;    // per seed: covers the security radius almost always (measured: 12 ~ 20, faster)
 
 struct CellPiece {
     int seed;
@@ -181,8 +181,11 @@ struct RestrictedVoronoiDiagram::Impl {
                 }
                 if (duplicate[idx[q]]) continue;
                 const double dp = ((*seeds)[idx[q]] - p).squaredNorm();
-                if (dp < best) best = dp, next = static_cast<int>(idx[q]), tie = false;
-                else if (dp == best && next == current) tie = true;
+                if (dp < best) {
+                    best = dp, next = static_cast<int>(idx[q]);
+                    break;  // first improvement: move on from there
+                }
+                if (dp == best) tie = true;
             }
             if (next != current) {
                 current = next;
