@@ -3,7 +3,6 @@
 #include "mesh.h"
 #include "mesh_io.h"
 
-#include <cstdint>
 #include <string>
 
 namespace fieldcvt::io_detail {
@@ -16,14 +15,10 @@ std::string readFileBytes(const std::string& path);
 //! Writes `bytes` to `path` (replacing it); throws IOError on any failure.
 void writeFileBytes(const std::string& path, const std::string& bytes);
 
-//! Fails if the PLY header announces more elements than a file of `fileSize` bytes can hold;
-//! leaves malformed headers to vcglib's parser.
-void checkPlySize(const std::string& path, std::uintmax_t fileSize);
-
 // Readers, one per format. `path` is only used in messages (and by vcglib to open the file).
 TriMesh readObj(const std::string& path, const std::string& text, MeshReadInfo& info);
 TriMesh readOff(const std::string& path, const std::string& text, MeshReadInfo& info);
-TriMesh readPly(const std::string& path, MeshReadInfo& info);
+TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info);
 TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo& info);
 
 // Writers, one per format; they never see an attribute vector of the wrong size.

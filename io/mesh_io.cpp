@@ -89,7 +89,7 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info)
     MeshReadInfo& out = info ? *info : local;
     TriMesh mesh;
     switch (format) {
-    case Format::Ply: mesh = io_detail::readPly(path, out); break;
+    case Format::Ply: mesh = io_detail::readPly(path, io_detail::readFileBytes(path), out); break;
     case Format::Obj: mesh = io_detail::readObj(path, io_detail::readFileBytes(path), out); break;
     case Format::Off: mesh = io_detail::readOff(path, io_detail::readFileBytes(path), out); break;
     case Format::Stl: mesh = io_detail::readStl(path, io_detail::readFileBytes(path), out); break;

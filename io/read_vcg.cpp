@@ -1,15 +1,13 @@
-// PLY and STL through vcglib's wrap/io_trimesh importers, with the checks vcglib 2020.09 lacks
-// done before the call (STL) and memory exhaustion from a lying header turned into an IOError.
+// STL: ASCII through vcglib's wrap/io_trimesh importer, with the checks vcglib 2020.09 lacks done
+// before the call; binary (a fixed 50-byte record) read here directly.
 #include "io_detail.h"
 #include "vcg_mesh.h"
 
-#include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
 #include <map>
 #include <new>
 
@@ -17,13 +15,12 @@ namespace fieldcvt::io_detail {
 
 namespace {
 
-//! Copies vcglib's mesh; `merge` welds vertices at identical positions (STL repeats them per
-//! triangle), keeping the first occurrence's order so the result is deterministic.
-TriMesh toTriMesh(const VcgMesh& m, bool merge, int* merged = nullptr)
+//! Maps vcglib vertex slots to TriMesh indices, welding vertices at identical positions (STL
+//! repeats them per triangle) and keeping first occurrences in order (deterministic).
+std::vector<int> weldVertices(const VcgMesh& m, TriMesh& mesh)
 {
-    TriMesh mesh;
     std::vector<int> index(m.vert.size(), -1);
-    // Keyed by bit pattern: well ordered even for NaN (which the core reports); +0.0 adds fold -0.
+    // Keyed by bit pattern: well ordered even for NaN (which the core reports); +0.0 folds -0.
     std::map<std::array<std::uint64_t, 3>, int> seen;
     auto bits = [](double x) {
         x += 0.0;
@@ -34,60 +31,54 @@ TriMesh toTriMesh(const VcgMesh& m, bool merge, int* merged = nullptr)
     for (std::size_t i = 0; i < m.vert.size(); ++i) {
         if (m.vert[i].IsD()) continue;
         const auto& p = m.vert[i].cP();
-        if (merge) {
-            const auto [it, inserted] = seen.emplace(std::array<std::uint64_t, 3>{bits(p[0]), bits(p[1]), bits(p[2])}, mesh.vertexCount());
-            index[i] = it->second;
-            if (!inserted) continue;
-        } else {
-            index[i] = mesh.vertexCount();
-        }
-        mesh.vertices.emplace_back(p[0], p[1], p[2]);
+        const auto [it, inserted] = seen.emplace(std::array<std::uint64_t, 3>{bits(p[0]), bits(p[1]), bits(p[2])}, mesh.vertexCount());
+        index[i] = it->second;
+        if (inserted) mesh.vertices.emplace_back(p[0], p[1], p[2]);
     }
-    for (const VcgFace& f : m.face) {
-        if (f.IsD()) continue;
-        Face face;
-        for (int k = 0; k < 3; ++k) face[k] = index[vcg::tri::Index(m, f.cV(k))];
-        mesh.faces.push_back(face);
-    }
-    if (merged) *merged = static_cast<int>(m.vert.size()) - mesh.vertexCount();
-    return mesh;
+    return index;
 }
 
-//! vcglib marks the first triangle of each fan-triangulated polygon with only faux edge 2.
-int countTriangulatedPolygons(const VcgMesh& m)
+//! Triangle soup (STL) welded into an indexed mesh; the welding is reported in `info`.
+TriMesh toTriMesh(const VcgMesh& m, MeshReadInfo& info)
 {
-    int polygons = 0;
+    TriMesh mesh;
+    const std::vector<int> index = weldVertices(m, mesh);
     for (const VcgFace& f : m.face)
-        if (!f.IsD() && f.IsF(2) && !f.IsF(0)) ++polygons;
-    return polygons;
+        if (!f.IsD())
+            mesh.faces.push_back({index[vcg::tri::Index(m, f.cV(0))], index[vcg::tri::Index(m, f.cV(1))], index[vcg::tri::Index(m, f.cV(2))]});
+    const std::size_t merged = m.vert.size() - mesh.vertices.size();
+    if (merged > 0) info.notes.push_back("merged " + std::to_string(merged) + " duplicate STL vertices");
+    return mesh;
 }
 
 bool hasNewline(const std::string& bytes) { return bytes.find('\n') != std::string::npos; }
 
-}  // namespace
-
-TriMesh readPly(const std::string& path, MeshReadInfo& info)
+//! Binary STL from its bytes (size already checked): vcglib's OpenBinary first runs
+//! IsSTLColored, which builds a string from an unterminated 80-byte label (a stack over-read).
+void readBinaryStl(const std::string& bytes, VcgMesh& m)
 {
-    checkPlySize(path, std::filesystem::file_size(path));
-    using Importer = vcg::tri::io::ImporterPLY<VcgMesh>;
-    VcgMesh m;
-    int mask = 0;
-    int status = 0;
-    try {
-        status = Importer::Open(m, path.c_str(), mask);
-    } catch (const std::bad_alloc&) {
-        fail(path, "PLY header announces more elements than memory can hold (corrupt file?)");
+    std::uint32_t count = 0;
+    std::memcpy(&count, bytes.data() + 80, 4);
+    auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, count);
+    auto vi = vcg::tri::Allocator<VcgMesh>::AddVertices(m, std::size_t(count) * 3);
+    for (std::uint32_t t = 0; t < count; ++t, ++fi) {
+        float corners[9];  // after the 12-byte facet normal, which is recomputed anyway
+        std::memcpy(corners, bytes.data() + 84 + 50 * std::size_t(t) + 12, sizeof corners);
+        for (int k = 0; k < 3; ++k, ++vi) {
+            vi->P() = vcg::Point3d(corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]);
+            fi->V(k) = &*vi;
+        }
     }
-    if (status != 0 && Importer::ErrorCritical(status)) fail(path, std::string("invalid PLY file: ") + Importer::ErrorMsg(status));
-    info.polygonsTriangulated += countTriangulatedPolygons(m);
-    return toTriMesh(m, false);
 }
+
+}  // namespace
 
 TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo& info)
 {
-    // vcglib decides binary vs ASCII from the size; check that decision leads somewhere safe:
-    // a binary file must have exactly the size its triangle count gives (else vcglib reads past
-    // the end), an ASCII one must have a line end (else vcglib loops forever skipping line 1).
+    // We decide binary vs ASCII ourselves: vcglib's IsSTLBinary inspects 4 bytes it never read
+    // (uninitialised) and so may call a valid ASCII file malformed. A binary file must have
+    // exactly the size its triangle count gives (else vcglib reads past the end), an ASCII one
+    // must have a line end (else vcglib loops forever skipping line 1).
     constexpr std::size_t headerSize = 84, facetSize = 50;
     const bool binary = [&] {
         if (bytes.size() < headerSize) return false;
@@ -103,18 +94,12 @@ TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo&
     }
     using Importer = vcg::tri::io::ImporterSTL<VcgMesh>;
     VcgMesh m;
-    int mask = 0;
-    int status = 0;
-    try {
-        status = Importer::Open(m, path.c_str(), mask);
-    } catch (const std::bad_alloc&) {
-        fail(path, "not enough memory to read this STL file");
+    if (binary) {
+        readBinaryStl(bytes, m);
+    } else if (const int status = Importer::OpenAscii(m, path.c_str()); status != Importer::E_NOERROR) {
+        fail(path, std::string("invalid STL file: ") + Importer::ErrorMsg(status));
     }
-    if (status != Importer::E_NOERROR) fail(path, std::string("invalid STL file: ") + Importer::ErrorMsg(status));
-    int merged = 0;
-    TriMesh mesh = toTriMesh(m, true, &merged);
-    if (merged > 0) info.notes.push_back("merged " + std::to_string(merged) + " duplicate STL vertices");
-    return mesh;
+    return toTriMesh(m, info);
 }
 
 }  // namespace fieldcvt::io_detail

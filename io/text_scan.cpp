@@ -18,6 +18,13 @@ std::string_view dropPlus(std::string_view token)
 
 }  // namespace
 
+bool parseNumber(std::string_view token, double& value)
+{
+    const std::string_view t = dropPlus(token);
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    return ec == std::errc() && end == t.data() + t.size();
+}
+
 bool TextScanner::nextLine()
 {
     tokens_.clear();
@@ -41,11 +48,8 @@ bool TextScanner::nextLine()
 
 double TextScanner::number(std::string_view token) const
 {
-    const std::string_view t = dropPlus(token);
     double value = 0;
-    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-    if (ec != std::errc() || end != t.data() + t.size())
-        fail("malformed number '" + std::string(token) + "'");
+    if (!parseNumber(token, value)) fail("malformed number '" + std::string(token) + "'");
     return value;
 }
 

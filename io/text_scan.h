@@ -7,6 +7,9 @@
 
 namespace fieldcvt::io_detail {
 
+//! Strict, locale-independent: true if the whole token is one number (a leading '+' allowed).
+bool parseNumber(std::string_view token, double& value);
+
 class TextScanner {
 public:
     TextScanner(const std::string& path, std::string_view text) : path_(path), text_(text) {}

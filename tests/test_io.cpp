@@ -263,6 +263,7 @@ TEST_F(IoTest, BrokenPly)
     expectIoError(write("h.ply", binary.substr(0, 30)));
     expectIoError(write("r.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n1 1 0\n3 0 1 7\n"));
     expectIoError(write("g.ply", "garbage\n"));
+    expectIoError(write("e.ply", "ply\nformat ascii 1.0\nelement vertex\nend_header\n"), "malformed PLY header");
     expectIoError(write("p.ply", plyHeader("ascii", 3, 0) + "0 0 0\n1 0 0\n1 1 0\n"), "no faces");
     expectIoError(write("huge.ply", plyHeader("binary_little_endian", 2000000000, 2000000000)), "truncated");
     expectIoError(write("hugea.ply", plyHeader("ascii", 2000000000, 1) + "0 0 0\n"), "truncated");

@@ -1,0 +1,214 @@
+// PLY reader of our own (ASCII, binary little and big endian). vcglib 2020.09's plylib is not
+// safe on untrusted files: it skips unread binary lists through a 512-byte stack buffer whatever
+// their length, reads int-counted index lists into a fixed 512-entry array, and calls atoi on a
+// missing element count; and ImporterPLY leaves some polygon indices unchecked.
+#include "io_detail.h"
+#include "text_scan.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace fieldcvt::io_detail {
+
+namespace {
+
+enum class Encoding { Ascii, LittleEndian, BigEndian };
+
+struct Property {
+    std::string name;
+    int size = 0;            //!< bytes of the value (of each item, for a list)
+    bool isFloat = false;
+    bool isSigned = false;
+    int countSize = 0;       //!< > 0: a list, with a count of this many bytes
+    bool countSigned = false;
+};
+
+struct Element {
+    std::string name;
+    long long count = 0;
+    std::vector<Property> properties;
+};
+
+//! Size and kind of a PLY scalar type name; size 0 if unknown.
+Property scalarType(const std::string& type)
+{
+    static const std::map<std::string, Property> types = {
+        {"char", {"", 1, false, true}},   {"int8", {"", 1, false, true}},    {"uchar", {"", 1, false, false}},
+        {"uint8", {"", 1, false, false}}, {"short", {"", 2, false, true}},   {"int16", {"", 2, false, true}},
+        {"ushort", {"", 2, false, false}}, {"uint16", {"", 2, false, false}}, {"int", {"", 4, false, true}},
+        {"int32", {"", 4, false, true}},  {"uint", {"", 4, false, false}},   {"uint32", {"", 4, false, false}},
+        {"float", {"", 4, true, true}},   {"float32", {"", 4, true, true}},  {"double", {"", 8, true, true}},
+        {"float64", {"", 8, true, true}}};
+    const auto it = types.find(type);
+    return it == types.end() ? Property{} : it->second;
+}
+
+//! Reads values from the body in the file's encoding, failing cleanly at the end of the data.
+class BodyReader {
+public:
+    BodyReader(const std::string& path, const std::string& bytes, std::size_t start, Encoding encoding)
+        : path_(path), bytes_(bytes), pos_(start), encoding_(encoding) {}
+
+    double value(int size, bool isFloat, bool isSigned)
+    {
+        if (encoding_ == Encoding::Ascii) return asciiValue();
+        if (bytes_.size() - pos_ < static_cast<std::size_t>(size)) fail(path_, "truncated PLY file (unexpected end of data)");
+        unsigned char b[8];
+        std::memcpy(b, bytes_.data() + pos_, size);
+        pos_ += size;
+        if (encoding_ == Encoding::BigEndian) std::reverse(b, b + size);  // to little endian
+        std::uint64_t u = 0;
+        for (int i = size - 1; i >= 0; --i) u = (u << 8) | b[i];
+        if (isFloat) {
+            if (size == 4) {
+                float f;
+                std::uint32_t u32 = static_cast<std::uint32_t>(u);
+                std::memcpy(&f, &u32, 4);
+                return f;
+            }
+            double d;
+            std::memcpy(&d, &u, 8);
+            return d;
+        }
+        if (isSigned && size < 8 && (u >> (8 * size - 1)) & 1) return static_cast<double>(static_cast<std::int64_t>(u - (std::uint64_t{1} << (8 * size))));
+        return static_cast<double>(u);
+    }
+
+private:
+    double asciiValue()
+    {
+        while (pos_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[pos_]))) ++pos_;
+        const std::size_t start = pos_;
+        while (pos_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[pos_]))) ++pos_;
+        if (start == pos_) fail(path_, "truncated PLY file (unexpected end of data)");
+        const std::string_view token(bytes_.data() + start, pos_ - start);
+        double value = 0;
+        if (!parseNumber(token, value)) fail(path_, "malformed number '" + std::string(token) + "' in the PLY data");
+        return value;
+    }
+
+    const std::string& path_;
+    const std::string& bytes_;
+    std::size_t pos_;
+    Encoding encoding_;
+};
+
+//! Parses the header; returns the offset of the body.
+std::size_t parseHeader(const std::string& path, const std::string& bytes, Encoding& encoding, std::vector<Element>& elements)
+{
+    const std::size_t end = bytes.find("end_header");
+    if (bytes.compare(0, 3, "ply") != 0 || end == std::string::npos) fail(path, "not a PLY file (no 'ply' ... 'end_header' header)");
+    std::size_t body = bytes.find('\n', end);
+    body = body == std::string::npos ? bytes.size() : body + 1;
+    std::istringstream header(bytes.substr(0, end));
+    std::string line;
+    bool formatSeen = false;
+    while (std::getline(header, line)) {
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        auto bad = [&] { fail(path, "malformed PLY header line '" + line.substr(0, line.find_last_not_of("\r") + 1) + "'"); };
+        if (keyword == "format") {
+            std::string format;
+            words >> format;
+            if (format == "ascii") encoding = Encoding::Ascii;
+            else if (format == "binary_little_endian") encoding = Encoding::LittleEndian;
+            else if (format == "binary_big_endian") encoding = Encoding::BigEndian;
+            else bad();
+            formatSeen = true;
+        } else if (keyword == "element") {
+            Element e;
+            if (!(words >> e.name >> e.count) || e.count < 0) bad();
+            elements.push_back(e);
+        } else if (keyword == "property") {
+            std::string type, name;
+            words >> type;
+            if (elements.empty()) bad();
+            Property p;
+            if (type == "list") {
+                std::string countType, itemType;
+                words >> countType >> itemType;
+                const Property count = scalarType(countType);
+                p = scalarType(itemType);
+                if (count.size == 0 || count.isFloat) bad();
+                p.countSize = count.size;
+                p.countSigned = count.isSigned;
+            } else {
+                p = scalarType(type);
+            }
+            if (p.size == 0 || !(words >> p.name)) bad();
+            elements.back().properties.push_back(p);
+        } else if (keyword != "ply" && keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+            bad();
+        }
+    }
+    if (!formatSeen) fail(path, "PLY header has no format line");
+    return body;
+}
+
+}  // namespace
+
+TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info)
+{
+    Encoding encoding = Encoding::Ascii;
+    std::vector<Element> elements;
+    const std::size_t body = parseHeader(path, bytes, encoding, elements);
+    BodyReader in(path, bytes, body, encoding);
+    TriMesh mesh;
+    // Every element takes at least one byte per property: a lying count fails at the end of the
+    // data instead of allocating for it.
+    const long long capacity = static_cast<long long>(bytes.size());
+    for (const Element& e : elements) {
+        const bool isVertex = e.name == "vertex", isFace = e.name == "face";
+        if ((isVertex || isFace) && e.count > std::numeric_limits<int>::max()) fail(path, "too many " + e.name + " elements");
+        int coordinate[3] = {-1, -1, -1};
+        int indexList = -1;
+        for (std::size_t i = 0; i < e.properties.size(); ++i) {
+            const Property& p = e.properties[i];
+            for (int k = 0; k < 3; ++k)
+                if (isVertex && p.countSize == 0 && p.name == std::string(1, "xyz"[k])) coordinate[k] = static_cast<int>(i);
+            if (isFace && p.countSize > 0 && !p.isFloat && (p.name == "vertex_indices" || p.name == "vertex_index")) indexList = static_cast<int>(i);
+        }
+        if (isVertex && std::count(coordinate, coordinate + 3, -1) > 0) fail(path, "PLY vertices lack an x, y or z property");
+        if (isFace && indexList < 0) fail(path, "PLY faces lack a vertex_indices list");
+        if (isVertex) mesh.vertices.reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
+        std::vector<int> polygon;
+        // Without properties an element has no bytes: nothing to read, however many it claims.
+        for (long long n = 0; n < e.count && !e.properties.empty(); ++n) {
+            double xyz[3] = {0, 0, 0};
+            for (std::size_t i = 0; i < e.properties.size(); ++i) {
+                const Property& p = e.properties[i];
+                if (p.countSize == 0) {
+                    const double v = in.value(p.size, p.isFloat, p.isSigned);
+                    for (int k = 0; k < 3; ++k)
+                        if (coordinate[k] == static_cast<int>(i)) xyz[k] = v;
+                    continue;
+                }
+                const double items = in.value(p.countSize, false, p.countSigned);
+                if (!(items >= 0) || items > capacity) fail(path, "invalid list length in PLY element " + e.name);
+                polygon.clear();
+                for (long long j = 0; j < static_cast<long long>(items); ++j) {
+                    const double v = in.value(p.size, p.isFloat, p.isSigned);
+                    if (static_cast<int>(i) != indexList) continue;
+                    if (!(v >= 0) || v >= mesh.vertexCount() || v != static_cast<int>(v))
+                        fail(path, "face " + std::to_string(n) + " has vertex index " + std::to_string(static_cast<long long>(v)) +
+                                       " out of range (" + std::to_string(mesh.vertexCount()) + " vertices)");
+                    polygon.push_back(static_cast<int>(v));
+                }
+                if (static_cast<int>(i) != indexList) continue;
+                if (polygon.size() < 3) fail(path, "face " + std::to_string(n) + " has " + std::to_string(polygon.size()) + " corners");
+                for (std::size_t k = 1; k + 1 < polygon.size(); ++k) mesh.faces.push_back({polygon[0], polygon[k], polygon[k + 1]});
+                if (polygon.size() > 3) ++info.polygonsTriangulated;
+            }
+            if (isVertex) mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+        }
+    }
+    return mesh;
+}
+
+}  // namespace fieldcvt::io_detail
