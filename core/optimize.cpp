@@ -62,6 +62,7 @@ namespace {
 
 // Wraps the energy for LBFGS++ and remembers the best point evaluated.
 struct TrackedObjective {
+    explicit TrackedObjective(EnergyFunction& e) : energy(e) {}
     EnergyFunction& energy;
     double bestValue = std::numeric_limits<double>::infinity();
     Eigen::VectorXd best;
@@ -86,7 +87,7 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
     OptimizeStats stats;
     if (params.iterations <= 0) return stats;
     Eigen::VectorXd x = flatten(seeds);
-    TrackedObjective objective{energy};
+    TrackedObjective objective(energy);
 
     LBFGSpp::LBFGSParam<double> solverParams;
     solverParams.m = params.memory;

@@ -45,6 +45,39 @@ inline TriMesh torus(int n, int m, double R = 1.0, double r = 0.35)
     return t;
 }
 
+//! Unit disk in the plane z = 0: a centre vertex and `rings` rings of 6k vertices (no corners
+//! on its border, unlike planeGrid).
+inline TriMesh disk(int rings)
+{
+    const double pi = 3.14159265358979323846;
+    TriMesh m;
+    m.vertices.emplace_back(0, 0, 0);
+    for (int r = 1; r <= rings; ++r)
+        for (int k = 0; k < 6 * r; ++k) {
+            const double a = 2 * pi * k / (6 * r);
+            m.vertices.emplace_back(std::cos(a) * r / rings, std::sin(a) * r / rings, 0.0);
+        }
+    auto ringStart = [](int r) { return r == 0 ? 0 : 1 + 3 * r * (r - 1); };
+    for (int r = 1; r <= rings; ++r) {
+        // Walk the outer ring r and the inner ring r - 1 together, always advancing the one
+        // whose next vertex comes first in angle (the centre is a ring of one).
+        const int nOut = 6 * r, nIn = r == 1 ? 1 : 6 * (r - 1);
+        int i = 0, o = 0;
+        while (o < nOut || (nIn > 1 && i < nIn)) {
+            const int in0 = ringStart(r - 1) + i % nIn, out0 = ringStart(r) + o % nOut;
+            const bool advanceOuter = nIn == 1 || i >= nIn || (o < nOut && (o + 1.0) / nOut <= (i + 1.0) / nIn);
+            if (advanceOuter) {
+                m.faces.push_back({in0, out0, ringStart(r) + (o + 1) % nOut});
+                ++o;
+            } else {
+                m.faces.push_back({in0, out0, ringStart(r - 1) + (i + 1) % nIn});
+                ++i;
+            }
+        }
+    }
+    return m;
+}
+
 //! Unit icosphere subdivided `levels` times (closed, genus 0, outward orientation).
 inline TriMesh icosphere(int levels)
 {

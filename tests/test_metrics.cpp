@@ -372,3 +372,13 @@ TEST(MetricsDistance, RejectsEmptyMeshes)
 
 }  // namespace
 }  // namespace fieldcvt
+
+TEST(MetricsTopology, TestDiskIsAManifoldDisk)
+{
+    const fieldcvt::TopologySummary t = fieldcvt::computeTopology(fieldcvt::testmesh::disk(5));
+    EXPECT_TRUE(t.manifold());
+    EXPECT_TRUE(t.orientable);
+    EXPECT_EQ(t.boundaryLoops, 1);
+    EXPECT_EQ(t.genus, 0);
+    EXPECT_EQ(t.faces, 6 * 25);
+}

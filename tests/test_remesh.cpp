@@ -1,0 +1,116 @@
+// The public entry point: properties of the output (not exact counts), determinism,
+// parameter validation, progress and cancellation.
+#include "errors.h"
+#include "remesh.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+using namespace fieldcvt;
+
+namespace {
+
+RemeshParams quick(int vertices)
+{
+    RemeshParams p;
+    p.vertexCount = vertices;
+    p.cvtIterations = 40;
+    p.lloydIterations = 10;
+    return p;
+}
+
+}  // namespace
+
+TEST(Remesh, SphereGivesManifoldGenusZeroWellShapedMesh)
+{
+    const RemeshResult r = remesh(testmesh::icosphere(4), quick(400));
+    EXPECT_TRUE(r.outputTopology.manifold());
+    EXPECT_TRUE(r.outputTopology.orientable);
+    EXPECT_EQ(r.outputTopology.genus, 0);
+    EXPECT_EQ(r.outputTopology.boundaryLoops, 0);
+    EXPECT_NEAR(r.metrics.vertices, 400, 4);
+    EXPECT_GT(r.metrics.qAvg, 0.9);
+    EXPECT_GT(r.metrics.thetaMin, 25.0);
+    EXPECT_LT(r.metrics.dH, 0.02);
+    EXPECT_GT(r.evaluations, 40);
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+}
+
+TEST(Remesh, TorusKeepsGenusAndOrientation)
+{
+    const TriMesh input = testmesh::torus(60, 24);
+    const RemeshResult r = remesh(input, quick(600));
+    EXPECT_TRUE(r.outputTopology.manifold());
+    EXPECT_EQ(r.outputTopology.genus, 1);
+    // Oriented like the input: outward normals point away from the torus' core circle.
+    int outward = 0;
+    for (const Face& f : r.mesh.faces) {
+        const Vec3 c = (r.mesh.vertices[f[0]] + r.mesh.vertices[f[1]] + r.mesh.vertices[f[2]]) / 3;
+        const Vec3 core = Vec3(c.x(), c.y(), 0).normalized();
+        const Vec3 n = (r.mesh.vertices[f[1]] - r.mesh.vertices[f[0]]).cross(r.mesh.vertices[f[2]] - r.mesh.vertices[f[0]]);
+        outward += n.dot(c - core) > 0;
+    }
+    EXPECT_EQ(outward, r.mesh.faceCount());
+}
+
+TEST(Remesh, OpenPatchKeepsItsBoundaryOnTheInputBorder)
+{
+    const RemeshResult r = remesh(testmesh::disk(20), quick(300));
+    EXPECT_EQ(r.outputTopology.boundaryLoops, 1);
+    EXPECT_EQ(r.outputTopology.genus, 0);
+    // The border is followed, not cut at half a cell (which would be about 0.025 here).
+    EXPECT_LT(r.metrics.dH, 0.005);
+    EXPECT_GT(r.metrics.thetaMin, 20.0);
+}
+
+TEST(Remesh, SameSeedSameOutputOtherSeedOtherOutput)
+{
+    const TriMesh input = testmesh::icosphere(3);
+    const RemeshResult a = remesh(input, quick(200)), b = remesh(input, quick(200));
+    EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);
+    EXPECT_EQ(a.mesh.faces, b.mesh.faces);
+    RemeshParams other = quick(200);
+    other.seed = 7;
+    EXPECT_NE(remesh(input, other).mesh.vertices, a.mesh.vertices);
+}
+
+TEST(Remesh, CoarseSamplingOfAThinTorusIsReported)
+{
+    // 12 samples cannot carry a torus' handle: the result must say so, not pretend.
+    RemeshParams p = quick(12);
+    const RemeshResult r = remesh(testmesh::torus(40, 12, 1.0, 0.1), p);
+    const bool recovered = r.outputTopology.genus == 1 && r.outputTopology.manifold();
+    bool warned = false;
+    for (const std::string& w : r.warnings) warned |= w.find("topology not recovered") != std::string::npos;
+    EXPECT_TRUE(recovered || warned);
+}
+
+TEST(Remesh, RejectsOutOfRangeParameters)
+{
+    const TriMesh input = testmesh::icosphere(1);
+    RemeshParams p;
+    p.vertexCount = 3;
+    EXPECT_THROW(remesh(input, p), InvalidInputError);
+    p = RemeshParams{};
+    p.lambda = -1;
+    EXPECT_THROW(remesh(input, p), InvalidInputError);
+    p = RemeshParams{};
+    p.cvtIterations = -5;
+    EXPECT_THROW(remesh(input, p), InvalidInputError);
+}
+
+TEST(Remesh, ReportsProgressInOrderAndCanBeCancelled)
+{
+    const TriMesh input = testmesh::icosphere(3);
+    std::vector<double> percents;
+    remesh(input, quick(100), [&](const std::string&, double percent) {
+        percents.push_back(percent);
+        return true;
+    });
+    ASSERT_GT(percents.size(), 10u);
+    EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
+    EXPECT_EQ(percents.back(), 100.0);
+
+    int calls = 0;
+    EXPECT_THROW(remesh(input, quick(100), [&](const std::string&, double) { return ++calls < 5; }), CancelledError);
+}
