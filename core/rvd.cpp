@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 
 namespace fieldcvt {
 
@@ -74,6 +75,36 @@ struct Scratch {
     std::vector<double> extraDist;
 };
 
+// Indices of `points` sorted along a Morton (Z-order) curve over their bounding box, so that
+// consecutive entries are close in space: walks between them are short and memory accesses
+// stay local.
+std::vector<int> mortonOrder(const std::vector<Vec3>& points)
+{
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+    for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+    auto spread = [](uint64_t x) {  // 21 bits -> every third bit of 63
+        x &= 0x1fffff;
+        x = (x | x << 32) & 0x1f00000000ffffULL;
+        x = (x | x << 16) & 0x1f0000ff0000ffULL;
+        x = (x | x << 8) & 0x100f00f00f00f00fULL;
+        x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+        x = (x | x << 2) & 0x1249249249249249ULL;
+        return x;
+    };
+    std::vector<std::pair<uint64_t, int>> keys(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Vec3 q = ((points[i] - lo).array() / extent.array() * 2097151.0).matrix();
+        keys[i] = {spread(static_cast<uint64_t>(q.x())) | spread(static_cast<uint64_t>(q.y())) << 1 |
+                       spread(static_cast<uint64_t>(q.z())) << 2,
+                   static_cast<int>(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<int> order(points.size());
+    for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
+    return order;
+}
+
 std::array<int, 3> canonicalTriangle(int a, int b, int c)
 {
     // Rotate so the smallest index comes first; the cyclic order (orientation) is kept.
@@ -88,6 +119,8 @@ struct RestrictedVoronoiDiagram::Impl {
     const TriMesh& surface;
     std::vector<Vec3> unitNormals;  // per input face
     std::vector<unsigned char> borderEdges;  // per input face: bit e set if edge e has no other face
+    std::vector<int> vertexOrder;            // input vertices in Morton order
+    std::vector<int> faceOrder;              // input faces in Morton order of their centroids
     std::vector<ChunkOutput> chunks;
     std::vector<Scratch> scratch;
 
@@ -110,6 +143,11 @@ struct RestrictedVoronoiDiagram::Impl {
             unitNormals[f] = len > 0 ? Vec3(n / len) : Vec3::Zero();
         }
         chunks.resize((s.faces.size() + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
+        vertexOrder = mortonOrder(s.vertices);
+        std::vector<Vec3> centroids(s.faces.size());
+        for (int f = 0; f < s.faceCount(); ++f)
+            centroids[f] = (s.vertices[s.faces[f][0]] + s.vertices[s.faces[f][1]] + s.vertices[s.faces[f][2]]) / 3.0;
+        faceOrder = mortonOrder(centroids);
 
         std::vector<std::pair<std::pair<int, int>, int>> edges;  // (sorted corners) -> face * 3 + e
         edges.reserve(s.faces.size() * 3);
@@ -210,10 +248,11 @@ struct RestrictedVoronoiDiagram::Impl {
         const int chunkCount = (n + kVerticesPerChunk - 1) / kVerticesPerChunk;
 #pragma omp parallel for schedule(dynamic, 1)
         for (int c = 0; c < chunkCount; ++c) {
-            // Consecutive vertices are usually close: each walk starts at the previous answer.
+            // Consecutive vertices (Morton order) are close: each walk starts at the previous answer.
             int previous = -1;
             const int end = std::min(n, (c + 1) * kVerticesPerChunk);
-            for (int v = c * kVerticesPerChunk; v < end; ++v) {
+            for (int k = c * kVerticesPerChunk; k < end; ++k) {
+                const int v = vertexOrder[k];
                 const int s = certifiedNearestSeed(previous, surface.vertices[v]);
                 vertexSeed[v] = s;
                 if (s >= 0) previous = s;
@@ -452,7 +491,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
             ChunkOutput& out = m.chunks[c];
             out.clear();
             const int end = std::min(faceCount, (c + 1) * kTrianglesPerChunk);
-            for (int t = c * kTrianglesPerChunk; t < end; ++t) m.processTriangle(t, options, out, scratch);
+            for (int k = c * kTrianglesPerChunk; k < end; ++k) m.processTriangle(m.faceOrder[k], options, out, scratch);
         }
     }
 
