@@ -1,0 +1,65 @@
+#pragma once
+// The 6-RoSy direction field that FCVT aligns edges to (paper §3.2–3.3, §4.1): per input vertex
+// a unit normal n and a unit representative direction d ⟂ n; the six field directions are d
+// rotated by k·60° about n.
+#include "mesh.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fieldcvt {
+
+struct DirectionField {
+    std::vector<Vec3> normals;     //!< per input vertex, unit
+    std::vector<Vec3> directions;  //!< per input vertex, unit, orthogonal to the normal
+};
+
+enum class FieldSource {
+    Extrinsic,     //!< extrinsically smooth field of Instant Meshes (Jakob et al. 2015)
+    CurvatureMax,  //!< maximal principal-curvature direction
+    CurvatureMin,  //!< minimal principal-curvature direction
+    User,          //!< given per vertex by the caller (RemeshParams::userDirections)
+};
+
+//! "extrinsic", "curvature-max", "curvature-min", "user" <-> FieldSource (throws
+//! InvalidInputError on an unknown name).
+FieldSource fieldSourceFromName(const std::string& name);
+std::string fieldSourceName(FieldSource source);
+
+struct FieldParams {
+    FieldSource source = FieldSource::Extrinsic;
+    std::uint64_t seed = 1;        //!< seed of the random initial directions (extrinsic)
+    int smoothingIterations = 20;  //!< Gauss–Seidel sweeps per hierarchy level (extrinsic)
+    //! Edges whose dihedral angle exceeds this (degrees) constrain the field to their tangent,
+    //! like boundary edges; <= 0 disables crease constraints.
+    double sharpAngle = 60.0;
+};
+
+//! Computes the field at every vertex of `mesh` (which must be a clean triangle mesh: see
+//! mesh_check.h). Deterministic for a given seed and independent of the thread count.
+DirectionField computeField(const TriMesh& mesh, const FieldParams& params);
+
+//! Builds a field from user vectors per vertex: each is projected on the tangent plane of the
+//! vertex normal and normalised. Throws InvalidInputError on a size mismatch; a vector
+//! (nearly) parallel to the normal is replaced by the smooth extrinsic field's direction there.
+DirectionField fieldFromVectors(const TriMesh& mesh, const std::vector<Vec3>& vectors, std::uint64_t seed = 1);
+
+//! Area-weighted vertex normals (unit); isolated vertices get (0, 0, 1).
+std::vector<Vec3> vertexNormals(const TriMesh& mesh);
+
+//! The extrinsic energy Σ_edges ||d_i' − d_j'||² over the best-matching representatives
+//! (Jakob et al. 2015, eq. 3); smoothing lowers it.
+double extrinsicEnergy(const TriMesh& mesh, const DirectionField& field);
+
+struct Singularity {
+    int face = -1;       //!< face whose corners' representatives turn by a non-zero amount
+    int index = 0;       //!< 6-RoSy index in sixths of a turn (sum over faces = 6·χ on a closed surface)
+    Vec3 position;       //!< the face's centroid
+};
+
+//! Per-face 6-RoSy index: the sum of the rotations (in multiples of 60°) of the matched
+//! representatives around the face; faces with a non-zero index are singular.
+std::vector<Singularity> findSingularities(const TriMesh& mesh, const DirectionField& field);
+
+}  // namespace fieldcvt
