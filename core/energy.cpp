@@ -1,5 +1,10 @@
 #include "energy.h"
 
+#include "interpolation.h"
+
+#include <cmath>
+#include <complex>
+
 namespace fieldcvt {
 
 Eigen::VectorXd flatten(const std::vector<Vec3>& points)
@@ -16,7 +21,68 @@ std::vector<Vec3> unflatten(const Eigen::VectorXd& x)
     return points;
 }
 
-EnergyFunction::EnergyFunction(const TriMesh& surface) : diagram_(surface) {}
+double directionDistance(const Vec3& e, const Vec3& n, const Vec3& d, Vec3* gradient)
+{
+    // Spherical coordinates of e in {d, m = n × d, n} (§3.4): a = ρ cos φ, b = ρ sin φ with
+    // ρ = r sin θ. Then D = 1 − ½ (ρ/r + Re(z⁶) / (ρ⁵ r)) with z = a + ib.
+    const Vec3 m = n.cross(d);
+    const double a = e.dot(d), b = e.dot(m);
+    const double r2 = e.squaredNorm();
+    const double rho2 = a * a + b * b;
+    if (gradient) gradient->setZero();
+    if (!(r2 > 0)) return 1.0;
+    const double r = std::sqrt(r2);
+    if (!(rho2 > 1e-24 * r2)) return 1.0;  // along the normal: sin θ = 0, D = 1, φ undefined
+    const double rho = std::sqrt(rho2);
+    const std::complex<double> z(a, b);
+    const std::complex<double> z2 = z * z, z5 = z2 * z2 * z, z6 = z5 * z;
+    const double rho5 = rho2 * rho2 * rho;
+    const double g1 = rho / r;             // sin θ
+    const double g2 = z6.real() / (rho5 * r);  // cos 6φ · sin θ
+    if (gradient) {
+        // ∂ρ/∂e = t/ρ with t = a d + b m (tangent part); ∂r/∂e = e/r;
+        // ∂Re(z⁶)/∂e = 6 (Re(z⁵) d − Im(z⁵) m).
+        const Vec3 t = a * d + b * m;
+        const Vec3 dg1 = t / (rho * r) - g1 * e / r2;
+        const Vec3 dP = 6.0 * (z5.real() * d - z5.imag() * m);
+        const Vec3 dg2 = dP / (rho5 * r) - 5.0 * g2 * t / rho2 - g2 * e / r2;
+        *gradient = -0.5 * (dg1 + dg2);
+    }
+    return 1.0 - 0.5 * (g1 + g2);
+}
+
+double fieldEnergy(const std::vector<Vec3>& seeds, const std::vector<RvdEdge>& edges, const FieldFrames& frames,
+                   Eigen::VectorXd* gradient)
+{
+    double energy = 0;
+    Vec3 gi, gj;
+    // Sequential over the sorted edge list: deterministic sums, and cheap next to the RVD.
+    for (const RvdEdge& edge : edges) {
+        if (!(edge.length > 0)) continue;
+        const Vec3 e = seeds[edge.j] - seeds[edge.i];
+        // Both directions of the edge, each measured in the frame at its origin (appendix).
+        const double dij = directionDistance(e, frames.normals[edge.i], frames.directions[edge.i], gradient ? &gi : nullptr);
+        const double dji = directionDistance(-e, frames.normals[edge.j], frames.directions[edge.j], gradient ? &gj : nullptr);
+        energy += edge.length * (dij + dji);
+        if (gradient) {
+            // e_ij = x_j − x_i: ∂D_ij/∂x_i = −∂D/∂e, ∂D_ij/∂x_j = +∂D/∂e; e_ji the other way.
+            const Vec3 gx = edge.length * (gj - gi);
+            gradient->segment<3>(3 * edge.i) += gx;
+            gradient->segment<3>(3 * edge.j) -= gx;
+        }
+    }
+    return energy;
+}
+
+EnergyFunction::EnergyFunction(const TriMesh& surface) : surface_(surface), diagram_(surface) {}
+
+void EnergyFunction::setField(const DirectionField* field, const ClosestPointTree* tree, double lambda)
+{
+    const bool present = field && tree;
+    field_ = present ? field : nullptr;
+    tree_ = present ? tree : nullptr;
+    lambda_ = present ? lambda : 0.0;
+}
 
 const RvdResult& EnergyFunction::diagram(const std::vector<Vec3>& seeds, const RvdOptions& options)
 {
@@ -24,11 +90,29 @@ const RvdResult& EnergyFunction::diagram(const std::vector<Vec3>& seeds, const R
     return rvd_;
 }
 
+FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points) const
+{
+    FieldFrames frames;
+    frames.normals.resize(points.size());
+    frames.directions.resize(points.size());
+    if (!field_ || !tree_) return frames;
+#pragma omp parallel for schedule(static)
+    for (long long i = 0; i < static_cast<long long>(points.size()); ++i) {
+        const ClosestPoint cp = tree_->closest(points[i]);
+        const FieldSample s = interpolateField(surface_, *field_, cp.face, cp.barycentric);
+        frames.normals[i] = s.normal;
+        frames.directions[i] = s.direction;
+    }
+    return frames;
+}
+
 EnergyValue EnergyFunction::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& gradient)
 {
     seeds_.resize(x.size() / 3);
     for (size_t i = 0; i < seeds_.size(); ++i) seeds_[i] = x.segment<3>(3 * i);
-    diagram_.compute(seeds_, RvdOptions{}, rvd_);
+    RvdOptions options;
+    options.edges = field_ != nullptr;
+    diagram_.compute(seeds_, options, rvd_);
 
     EnergyValue value;
     gradient.resize(x.size());
@@ -37,7 +121,20 @@ EnergyValue EnergyFunction::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& 
         // ∂E_CVT/∂x_i = 2 m_i (x_i − c_i) = 2 (m_i x_i − ∫_cell x dσ)   (§4.3, [DFG99])
         gradient.segment<3>(3 * i) = 2.0 * (rvd_.mass[i] * seeds_[i] - rvd_.moment[i]);
     }
-    value.total = value.cvt;
+    if (field_) {
+        // Frames and weights are frozen for this evaluation (appendix).
+        frames_ = framesAt(seeds_);
+        if (lambda_ > 0) {
+            fieldGradient_.setZero(x.size());
+            value.field = fieldEnergy(seeds_, rvd_.edges, frames_, &fieldGradient_);
+            gradient += lambda_ * fieldGradient_;
+        } else {
+            value.field = fieldEnergy(seeds_, rvd_.edges, frames_, nullptr);  // measured only
+        }
+    }
+    for (size_t i = 0; i < frozen_.size() && i < seeds_.size(); ++i)
+        if (frozen_[i]) gradient.segment<3>(3 * i).setZero();
+    value.total = value.cvt + lambda_ * value.field;
     ++evaluations_;
     if (onEvaluation) onEvaluation(value);
     return value;

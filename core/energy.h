@@ -1,6 +1,10 @@
 #pragma once
 // The objective minimised over the sample positions X: E_tot = E_CVT + λ·E_field (§3).
-// This file holds E_CVT (eq. 1) and its gradient ∂E/∂x_i = 2 m_i (x_i − c_i) (§4.3).
+// E_CVT (eq. 1) with ∂E/∂x_i = 2 m_i (x_i − c_i) (§4.3); E_field (eq. 2–3) over the restricted
+// Delaunay edges, weighted by the length of the dual RVD edge (§3.5), with the gradient of the
+// paper's appendix (normal, direction and weights held fixed within an evaluation).
+#include "closest_point.h"
+#include "field.h"
 #include "mesh.h"
 #include "rvd.h"
 
@@ -14,22 +18,54 @@ namespace fieldcvt {
 Eigen::VectorXd flatten(const std::vector<Vec3>& points);
 std::vector<Vec3> unflatten(const Eigen::VectorXd& x);
 
+//! The 6-RoSy direction distance of eq. 3 for edge vector e in the frame {d, n × d, n}:
+//! D = 1 − ((1 + cos 6φ) / 2) · sin θ ∈ [0, 1], 0 on a field direction, 60°-periodic in φ.
+//! cos 6φ comes from the tangent components as Re((a + ib)⁶) / ρ⁶ (no trigonometry). If
+//! `gradient` is given it receives ∂D/∂e (zero where e is parallel to n, where φ is undefined).
+double directionDistance(const Vec3& e, const Vec3& n, const Vec3& d, Vec3* gradient = nullptr);
+
 struct EnergyValue {
     double cvt = 0;    //!< E_CVT
     double field = 0;  //!< E_field (0 while λ = 0)
     double total = 0;  //!< E_CVT + λ E_field
 };
 
+//! The field as the energy sees it: per-sample frames interpolated (§4.2) at the samples'
+//! closest points on the surface.
+struct FieldFrames {
+    std::vector<Vec3> normals;
+    std::vector<Vec3> directions;
+};
+
+//! E_field (eq. 2) for frozen frames and weights: Σ over RVD edges (i, j) of
+//! w_ij·D(x_j − x_i, n_i, d_i) + w_ij·D(x_i − x_j, n_j, d_j); adds ∂E_field/∂x into `gradient`
+//! (3n, not cleared) if given.
+double fieldEnergy(const std::vector<Vec3>& seeds, const std::vector<RvdEdge>& edges, const FieldFrames& frames,
+                   Eigen::VectorXd* gradient);
+
 //! Evaluates the energy and its gradient on one surface; owns the RVD work space.
 class EnergyFunction {
 public:
     explicit EnergyFunction(const TriMesh& surface);
+
+    //! Sets the field (null: none) and the weight λ of E_field. With a field and λ = 0, E_field
+    //! is measured (EnergyValue::field) but does not enter E_tot. The field lives on `surface`
+    //! (the one given to the constructor); `tree` answers closest-point queries on it. Both
+    //! must outlive the energy.
+    void setField(const DirectionField* field, const ClosestPointTree* tree, double lambda);
+    double lambda() const { return lambda_; }
+
+    //! Samples whose gradient is set to zero (e.g. samples held on the open border).
+    void setFrozen(std::vector<char> frozen) { frozen_ = std::move(frozen); }
 
     //! E at `x` (flattened seeds); writes ∂E/∂x into `gradient` (resized).
     EnergyValue evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& gradient);
 
     //! Computes the RVD of `seeds` with the requested extras (no energy bookkeeping).
     const RvdResult& diagram(const std::vector<Vec3>& seeds, const RvdOptions& options);
+
+    //! The field frames at `points` (their closest points on the surface).
+    FieldFrames framesAt(const std::vector<Vec3>& points) const;
 
     //! The RVD of the last evaluate() / diagram() call.
     const RvdResult& lastDiagram() const { return rvd_; }
@@ -38,9 +74,16 @@ public:
     std::function<void(const EnergyValue&)> onEvaluation;
 
 private:
+    const TriMesh& surface_;
     RestrictedVoronoiDiagram diagram_;
     RvdResult rvd_;
     std::vector<Vec3> seeds_;
+    const DirectionField* field_ = nullptr;
+    const ClosestPointTree* tree_ = nullptr;
+    double lambda_ = 0;
+    std::vector<char> frozen_;
+    FieldFrames frames_;
+    Eigen::VectorXd fieldGradient_;
     int evaluations_ = 0;
 };
 

@@ -106,6 +106,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
             clean.vertices.push_back(input.vertices[v]);
         }
     report.removedUnreferencedVertices = n - clean.vertexCount();
+    report.cleanIndex = newIndex;  // -1 exactly for the removed vertices
     clean.faces.reserve(faces.size());
     for (const Face& t : faces) clean.faces.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
 

@@ -13,6 +13,7 @@ struct InputReport {
     int removedDegenerateFaces = 0;  //!< repeated corner or zero area
     int removedDuplicateFaces = 0;   //!< same three corners as an earlier face
     std::vector<std::string> notes; //!< one human-readable line per repair
+    std::vector<int> cleanIndex;     //!< per input vertex: its index in the clean mesh, -1 if removed
 };
 
 //! Returns a clean copy of `input`: unreferenced vertices, degenerate and duplicate faces

@@ -31,10 +31,10 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
 //! such a sample moves to the centroid of the border inside its cell (a 1D CVT of the boundary
 //! curves), projected on the border; the others move to their cell's centroid. The RDT then
 //! has its boundary edges on the input's boundary instead of half a cell inside it.
-//! `border` holds the input's boundary edges as segments (at the working scale). Returns the
-//! number of samples on the border after the last step.
-int relaxBoundarySamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
-                         const std::vector<Segment>& border, int iterations);
+//! `border` holds the input's boundary edges as segments (at the working scale). Returns, per
+//! sample, whether it is on the border after the last step.
+std::vector<char> relaxBoundarySamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
+                                       const std::vector<Segment>& border, int iterations);
 
 //! L-BFGS on the energy, starting from and updating `seeds`. The best point seen is kept: a
 //! line-search failure restarts from it; a second failure without progress ends early.

@@ -2,6 +2,7 @@
 
 #include "closest_point.h"
 #include "energy.h"
+#include "field.h"
 #include "errors.h"
 #include "mesh_check.h"
 #include "optimize.h"
@@ -89,10 +90,12 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     Pipeline pipeline(params, progress, result);
 
     TriMesh surface;
+    std::vector<int> cleanIndex;  // input vertex -> surface vertex
     Normalisation frame;
     pipeline.run("prepare", [&] {
         InputReport report;
         surface = prepareInput(input, report);
+        cleanIndex = report.cleanIndex;
         result.warnings.insert(result.warnings.end(), report.notes.begin(), report.notes.end());
         result.inputTopology = computeTopology(surface);
         const double area = surfaceArea(surface);
@@ -104,14 +107,50 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         for (Vec3& p : surface.vertices) p = frame.toWork(p);
     });
 
-    const int lbfgsIterations = params.cvtIterations + params.fcvtIterations;
-    const double expectedEvaluations = params.lloydIterations + 1.2 * lbfgsIterations + 1;
+    // The field is needed when E_field is used, and is measured alongside whenever it exists.
+    const bool useField = params.fcvtIterations > 0 && params.lambda > 0;
+    const std::vector<Segment> border = boundarySegments(surface);
+    const double expectedEvaluations = params.lloydIterations + 1.1 * (params.cvtIterations + params.fcvtIterations) +
+                                       (border.empty() ? 0 : params.boundaryIterations) + 2;
     EnergyFunction energy(surface);
+    ClosestPointTree tree(surface);
+    DirectionField field;
     std::string stage = "sampling";
-    energy.onEvaluation = [&](const EnergyValue&) {
+    double best = std::numeric_limits<double>::infinity();
+    energy.onEvaluation = [&](const EnergyValue& value) {
+        // One history entry per accepted step: L-BFGS's line search only moves on after an
+        // evaluation that lowers E_tot, and every Lloyd step counts.
+        if (stage == "lloyd" || value.total < best) {
+            best = std::min(best, value.total);
+            result.energyHistory.push_back({stage, value.cvt, value.field});
+        }
         const double fraction = std::min(1.0, energy.evaluations() / expectedEvaluations);
         pipeline.report(stage, 5 + 85 * fraction);
     };
+
+    if (useField) {
+        pipeline.run("field", [&] {
+            stage = "field";
+            pipeline.report(stage, 2);
+            if (params.fieldSource == FieldSource::User) {
+                std::vector<Vec3> vectors(surface.vertices.size(), Vec3::Zero());
+                if (params.userDirections.size() != input.vertices.size())
+                    throw InvalidInputError("the user field has " + std::to_string(params.userDirections.size()) +
+                                            " vectors for " + std::to_string(input.vertices.size()) + " vertices");
+                for (size_t v = 0; v < input.vertices.size(); ++v)
+                    if (cleanIndex[v] >= 0) vectors[cleanIndex[v]] = params.userDirections[v];
+                field = fieldFromVectors(surface, vectors, params.seed);
+            } else {
+                FieldParams fieldParams;
+                fieldParams.source = params.fieldSource;
+                fieldParams.seed = params.seed;
+                field = computeField(surface, fieldParams);
+            }
+            result.singularities = findSingularities(surface, field);
+            for (Singularity& s : result.singularities) s.position = frame.fromWork(s.position);
+            energy.setField(&field, &tree, 0.0);  // measured during CVT, weighted in FCVT
+        });
+    }
 
     std::vector<Vec3> seeds;
     pipeline.run("sampling", [&] { seeds = sampleSurfaceUniform(surface, params.vertexCount, params.seed); });
@@ -119,16 +158,27 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         stage = "lloyd";
         lloydRelaxation(energy, surface, seeds, params.lloydIterations, params.seed);
     });
+    auto lbfgs = [&](int iterations) {
+        OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{iterations});
+        result.warnings.insert(result.warnings.end(), stats.warnings.begin(), stats.warnings.end());
+    };
     pipeline.run("cvt", [&] {
         stage = "cvt";
-        OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{params.cvtIterations});
-        result.warnings.insert(result.warnings.end(), stats.warnings.begin(), stats.warnings.end());
+        best = std::numeric_limits<double>::infinity();
+        lbfgs(params.cvtIterations);
     });
-
     pipeline.run("boundary", [&] {
         stage = "boundary";
-        relaxBoundarySamples(energy, seeds, boundarySegments(surface), params.boundaryIterations);
+        energy.setFrozen(relaxBoundarySamples(energy, seeds, border, params.boundaryIterations));
     });
+    if (params.fcvtIterations > 0) {
+        pipeline.run("fcvt", [&] {
+            stage = "fcvt";
+            best = std::numeric_limits<double>::infinity();
+            energy.setField(useField ? &field : nullptr, &tree, params.lambda);
+            lbfgs(params.fcvtIterations);
+        });
+    }
 
     pipeline.run("rdt", [&] {
         stage = "rdt";
@@ -136,10 +186,14 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         RvdOptions options;
         options.triangles = true;
         const RvdResult& rvd = energy.diagram(seeds, options);
-        ClosestPointTree tree(surface);
         RdtResult rdt = extractRdt(seeds, rvd.triangles, tree);
         result.warnings.insert(result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         result.mesh = std::move(rdt.mesh);
+        if (useField) {
+            const FieldFrames frames = energy.framesAt(result.mesh.vertices);
+            result.outputNormals = frames.normals;
+            result.outputDirections = frames.directions;
+        }
         for (Vec3& p : result.mesh.vertices) p = frame.fromWork(p);
     });
     result.evaluations = energy.evaluations();

@@ -1,6 +1,7 @@
 #pragma once
 // The one public entry point of the engine: input mesh + parameters -> remeshed mesh + report.
 #include "mesh.h"
+#include "field.h"
 #include "metrics.h"
 #include "progress.h"
 
@@ -12,19 +13,32 @@
 namespace fieldcvt {
 
 struct RemeshParams {
-    int vertexCount = 5000;       //!< target number of output vertices (samples), >= 4
-    double lambda = 0.0;          //!< weight of E_field (eq. 2); 0 = pure CVT
+    int vertexCount = 5000;  //!< target number of output vertices (samples), >= 4
+    //! Weight of E_field (eq. 2) on the normalised surface (mean cell area 1, §5); 0 = pure CVT.
+    //! Default chosen by measurement (README: λ sweep).
+    double lambda = 0.3;
     //! Lloyd warm-up steps before L-BFGS (§5, uneven sampling). 30 rather than a few: the
     //! L-BFGS then settles in a better minimum (fertility 3000: V6 85.1 -> 86.0 % over 3 seeds).
     int lloydIterations = 30;
-    int cvtIterations = 130;      //!< L-BFGS iterations on E_CVT (§5)
-    int fcvtIterations = 0;       //!< L-BFGS iterations on E_CVT + lambda E_field (§5)
-    //! Open surfaces: Lloyd steps after the optimisation that put the samples of border cells
-    //! on the border (1D CVT along it), so the output's boundary follows the input's.
+    int cvtIterations = 65;   //!< L-BFGS iterations on E_CVT (§5: 65, or 130 for a pure CVT)
+    int fcvtIterations = 65;  //!< then L-BFGS iterations on E_CVT + λ E_field (§5: 65)
+    //! Open surfaces: Lloyd steps after the CVT iterations that put the samples of border cells
+    //! on the border (1D CVT along it), so the output's boundary follows the input's. Those
+    //! samples then stay fixed during the FCVT iterations.
     int boundaryIterations = 10;
-    std::uint64_t seed = 1;       //!< seed of the initial sampling; same seed, same output
-    int threads = 0;              //!< OpenMP threads, 0 = runtime default
-    bool computeDistances = true; //!< also compute d_RMS / d_H against the input in the report
+    FieldSource fieldSource = FieldSource::Extrinsic;  //!< the 6-RoSy field E_field aligns to
+    //! FieldSource::User: one vector per input vertex (projected on the tangent plane).
+    std::vector<Vec3> userDirections;
+    std::uint64_t seed = 1;        //!< seed of the initial sampling and of the field
+    int threads = 0;               //!< OpenMP threads, 0 = runtime default
+    bool computeDistances = true;  //!< also compute d_RMS / d_H against the input in the report
+};
+
+//! Energies after one L-BFGS step (an evaluation that lowered E_tot) or one Lloyd step.
+struct EnergyRecord {
+    std::string phase;  //!< "lloyd", "cvt" or "fcvt"
+    double cvt = 0;     //!< E_CVT at the working scale (mean cell area 1)
+    double field = 0;   //!< E_field, measured also during CVT when a field is in use
 };
 
 //! One timed stage of a run ("sampling", "cvt", "rdt", "metrics", ...), in seconds.
@@ -42,6 +56,10 @@ struct RemeshResult {
     TopologySummary inputTopology;       //!< genus / boundary loops / components of the input
     TopologySummary outputTopology;      //!< the same for the output
     std::vector<std::string> warnings;   //!< e.g. topology not recovered, solver restarts
+    std::vector<EnergyRecord> energyHistory;  //!< convergence (paper Fig. 8)
+    //! The field interpolated at the output vertices (empty for a pure CVT without a field).
+    std::vector<Vec3> outputNormals, outputDirections;
+    std::vector<Singularity> singularities;  //!< of the input's field, positions in input units
 };
 
 //! Remeshes `input` (validated first; throws InvalidInputError with a clear message).
