@@ -6,6 +6,7 @@
 #include "mesh_io.h"
 #include "optimize.h"
 #include "remesh.h"
+#include "rvd.h"
 #include "sampling.h"
 
 #include <benchmark/benchmark.h>
@@ -49,6 +50,23 @@ void BM_EnergyEvaluationBunny5000(benchmark::State& state)
     state.counters["clipped_polygons"] = static_cast<double>(energy.lastDiagram().clippedPolygons);
 }
 BENCHMARK(BM_EnergyEvaluationBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The RVD with its edges (the weights of E_field), as every FCVT evaluation needs it.
+void BM_RvdWithEdgesBunny5000(benchmark::State& state)
+{
+    const BunnySetup& setup = bunny5000();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    RestrictedVoronoiDiagram rvd(setup.surface);
+    RvdResult result;
+    RvdOptions options;
+    options.edges = true;
+    for (auto _ : state) {
+        rvd.compute(setup.seeds, options, result);
+        benchmark::DoNotOptimize(result.edges.data());
+    }
+    state.counters["edges"] = static_cast<double>(result.edges.size());
+}
+BENCHMARK(BM_RvdWithEdgesBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_RemeshBunny5000(benchmark::State& state)
 {

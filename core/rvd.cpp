@@ -132,6 +132,8 @@ struct RestrictedVoronoiDiagram::Impl {
     std::vector<double> neighbourDist2;
     std::vector<char> duplicate;  // seed coincides with a lower-index seed: empty cell, no bisector
     std::vector<int> vertexSeed;  // per input vertex: the seed whose cell contains it, -1 on a tie
+    std::vector<int> edgeStart;        // work space of the edge merge
+    std::vector<RvdEdge> edgeBuffer;
     int storedNeighbours = 0;
 
     explicit Impl(const TriMesh& s) : surface(s)
@@ -520,18 +522,35 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
         if (options.triangles) result.triangles.insert(result.triangles.end(), out.triangles.begin(), out.triangles.end());
     }
     if (options.edges) {
-        // Sum the pieces of each shared edge (an RVD edge crosses several input triangles).
-        // stable_sort keeps the chunk order inside a pair, so the sums are deterministic.
-        std::stable_sort(result.edges.begin(), result.edges.end(),
-                         [](const RvdEdge& x, const RvdEdge& y) { return x.i != y.i ? x.i < y.i : x.j < y.j; });
-        size_t w = 0;
-        for (size_t r = 0; r < result.edges.size(); ++r) {
-            if (w > 0 && result.edges[w - 1].i == result.edges[r].i && result.edges[w - 1].j == result.edges[r].j)
-                result.edges[w - 1].length += result.edges[r].length;
-            else
-                result.edges[w++] = result.edges[r];
+        // Sum the pieces of each shared edge (an RVD edge crosses several input triangles):
+        // bucket the pieces by their first seed (counting sort, chunk order kept), then merge
+        // each seed's few pieces by second seed. Linear time and deterministic.
+        std::vector<int>& start = m.edgeStart;
+        start.assign(n + 1, 0);
+        for (const RvdEdge& e : result.edges) ++start[e.i + 1];
+        for (size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+        std::vector<RvdEdge>& bucketed = m.edgeBuffer;
+        bucketed.resize(result.edges.size());
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (const RvdEdge& e : result.edges) bucketed[fill[e.i]++] = e;
+        std::vector<int> kept(n, 0);
+#pragma omp parallel for schedule(static)
+        for (long long i = 0; i < static_cast<long long>(n); ++i) {
+            RvdEdge* first = bucketed.data() + start[i];
+            RvdEdge* last = bucketed.data() + start[i + 1];
+            std::stable_sort(first, last, [](const RvdEdge& x, const RvdEdge& y) { return x.j < y.j; });
+            RvdEdge* w = first;
+            for (RvdEdge* r = first; r != last; ++r) {
+                if (w != first && (w - 1)->j == r->j)
+                    (w - 1)->length += r->length;
+                else
+                    *w++ = *r;
+            }
+            kept[i] = static_cast<int>(w - first);
         }
-        result.edges.resize(w);
+        result.edges.clear();
+        for (size_t i = 0; i < n; ++i)
+            result.edges.insert(result.edges.end(), bucketed.begin() + start[i], bucketed.begin() + start[i] + kept[i]);
     }
     if (options.triangles) {
         std::sort(result.triangles.begin(), result.triangles.end());
