@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <numeric>
 #include <sstream>
 #include <tuple>
 
@@ -18,10 +20,52 @@ std::string point(const Vec3& p)
     return s.str();
 }
 
+std::string vertexAt(const TriMesh& input, int v) { return std::to_string(v) + " " + point(input.vertices[v]); }
+
+// Union-find with path halving (no recursion: deep chains on large meshes are fine).
+struct DisjointSets {
+    std::vector<int> parent;
+    explicit DisjointSets(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+    int find(int x)
+    {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    void unite(int a, int b)
+    {
+        a = find(a), b = find(b);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+};
+
+// One side of an undirected edge: the face and whether it runs from the smaller vertex index
+// to the larger one.
+struct EdgeSide {
+    int lo, hi, face;
+    bool forward;
+    bool operator<(const EdgeSide& o) const { return std::tie(lo, hi, face) < std::tie(o.lo, o.hi, o.face); }
+};
+
+std::vector<EdgeSide> edgeSides(const std::vector<Face>& faces)
+{
+    std::vector<EdgeSide> sides;
+    sides.reserve(faces.size() * 3);
+    for (int f = 0; f < static_cast<int>(faces.size()); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int a = faces[f][k], b = faces[f][(k + 1) % 3];
+            sides.push_back({std::min(a, b), std::max(a, b), f, a < b});
+        }
+    std::sort(sides.begin(), sides.end());
+    return sides;
+}
+
+int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
+
 }  // namespace
 
 TriMesh prepareInput(const TriMesh& input, InputReport& report)
 {
+    report = InputReport{};
     if (input.faces.empty())
         throw InvalidInputError(input.vertices.empty() ? "the mesh is empty"
                                                        : "the mesh has no faces (a point cloud cannot be remeshed)");
@@ -31,22 +75,52 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
             if (c < 0 || c >= n)
                 throw InvalidInputError("face " + std::to_string(f) + " refers to vertex " + std::to_string(c) +
                                         ", but the mesh has " + std::to_string(n) + " vertices");
-
-    // Faces: drop degenerate ones and exact duplicates (same corner set).
-    std::vector<Face> faces;
-    faces.reserve(input.faces.size());
-    std::vector<std::tuple<int, int, int>> seen;
-    seen.reserve(input.faces.size());
-    for (int f = 0; f < input.faceCount(); ++f) {
-        const Face& t = input.faces[f];
-        for (int c : t)
+    std::vector<char> referenced(n, 0);
+    for (const Face& t : input.faces)
+        for (int c : t) {
             if (!input.vertices[c].allFinite())
                 throw InvalidInputError("vertex " + std::to_string(c) + " has a non-finite coordinate " + point(input.vertices[c]));
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || faceNormal(input, f).squaredNorm() == 0.0) {
+            referenced[c] = 1;
+        }
+
+    // 1. Exactly duplicate vertices (same coordinates) merged into the first of them, before
+    // anything else: the faces on either side of a seam then share their edge.
+    std::vector<int> rep(n);
+    std::iota(rep.begin(), rep.end(), 0);
+    {
+        std::vector<int> order;
+        order.reserve(n);
+        for (int v = 0; v < n; ++v)
+            if (referenced[v]) order.push_back(v);
+        auto key = [&](int v) {
+            const Vec3& p = input.vertices[v];
+            return std::make_tuple(p.x(), p.y(), p.z(), v);
+        };
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+        for (size_t r = 1; r < order.size(); ++r)
+            if (input.vertices[order[r]] == input.vertices[order[r - 1]]) {
+                rep[order[r]] = rep[order[r - 1]];
+                ++report.mergedDuplicateVertices;
+            }
+    }
+
+    // 2. Faces: drop degenerate ones (repeated corner, zero area; thin needles of non-zero area
+    // are fine for the RVD and kept) and exact duplicates (same corner set).
+    std::vector<Face> faces;
+    std::vector<int> faceOrigin;  // clean face -> input face, for messages
+    faces.reserve(input.faces.size());
+    faceOrigin.reserve(input.faces.size());
+    for (int f = 0; f < input.faceCount(); ++f) {
+        const Face t{rep[input.faces[f][0]], rep[input.faces[f][1]], rep[input.faces[f][2]]};
+        const Vec3& a = input.vertices[t[0]];
+        const Vec3 normal = (input.vertices[t[1]] - a).cross(input.vertices[t[2]] - a);
+        // Exact zero test (not squaredNorm() == 0, which underflows on tiny but valid faces).
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || (normal.array() == 0.0).all()) {
             ++report.removedDegenerateFaces;
             continue;
         }
         faces.push_back(t);
+        faceOrigin.push_back(f);
     }
     {
         std::vector<std::pair<std::array<int, 3>, int>> keys;
@@ -64,58 +138,173 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
                 ++report.removedDuplicateFaces;
             }
         std::vector<Face> kept;
+        std::vector<int> keptOrigin;
         kept.reserve(faces.size());
+        keptOrigin.reserve(faces.size());
         for (size_t f = 0; f < faces.size(); ++f)
-            if (keep[f]) kept.push_back(faces[f]);
+            if (keep[f]) kept.push_back(faces[f]), keptOrigin.push_back(faceOrigin[f]);
         faces.swap(kept);
+        faceOrigin.swap(keptOrigin);
     }
     if (faces.empty()) throw InvalidInputError("every face of the mesh is degenerate (zero area)");
+    const int faceCount = static_cast<int>(faces.size());
 
-    // Non-manifold edges: more than two faces on one edge cannot be remeshed as one surface.
+    // 3. Non-manifold edges: more than two faces on one edge cannot be remeshed as one surface.
+    std::vector<EdgeSide> sides = edgeSides(faces);
     {
-        std::vector<std::pair<int, int>> edges;
-        edges.reserve(faces.size() * 3);
-        for (const Face& t : faces)
-            for (int k = 0; k < 3; ++k) edges.push_back(std::minmax(t[k], t[(k + 1) % 3]));
-        std::sort(edges.begin(), edges.end());
         int nonManifold = 0;
         std::pair<int, int> first{-1, -1};
-        for (size_t r = 0; r < edges.size();) {
+        for (size_t r = 0; r < sides.size();) {
             size_t e = r;
-            while (e < edges.size() && edges[e] == edges[r]) ++e;
+            while (e < sides.size() && sides[e].lo == sides[r].lo && sides[e].hi == sides[r].hi) ++e;
             if (e - r > 2) {
-                if (nonManifold == 0) first = edges[r];
+                if (nonManifold == 0) first = {sides[r].lo, sides[r].hi};
                 ++nonManifold;
             }
             r = e;
         }
         if (nonManifold > 0)
             throw InvalidInputError(std::to_string(nonManifold) + " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
-                                    std::to_string(first.first) + " " + point(input.vertices[first.first]) + " and " +
-                                    std::to_string(first.second) + " " + point(input.vertices[first.second]));
+                                    vertexAt(input, first.first) + " and " + vertexAt(input, first.second));
     }
 
-    // Compact: keep referenced vertices only, in their original order.
-    std::vector<int> newIndex(n, -1);
+    // Neighbours across each edge (at most one now), and whether both faces run along the
+    // edge in the same direction (inconsistent orientation).
+    struct Across {
+        int face = -1;
+        bool same = false;
+        int lo = -1, hi = -1;
+    };
+    std::vector<std::array<Across, 3>> across(faceCount);
+    std::vector<int> acrossCount(faceCount, 0);
+    for (size_t r = 0; r + 1 < sides.size(); ++r) {
+        const EdgeSide& s = sides[r];
+        const EdgeSide& t = sides[r + 1];
+        if (s.lo != t.lo || s.hi != t.hi) continue;
+        across[s.face][acrossCount[s.face]++] = {t.face, s.forward == t.forward, s.lo, s.hi};
+        across[t.face][acrossCount[t.face]++] = {s.face, s.forward == t.forward, s.lo, s.hi};
+        ++r;
+    }
+
+    // 4. Orientation: per connected component, a breadth-first walk from its first face flips
+    // every face that disagrees with the face it was reached from. A face reached again with
+    // the opposite requirement closes an orientation-reversing loop: a Möbius-like surface.
+    std::vector<int> component(faceCount, -1);
+    std::vector<char> flip(faceCount, 0);
+    {
+        std::vector<int> queue;
+        queue.reserve(faceCount);
+        for (int start = 0; start < faceCount; ++start) {
+            if (component[start] >= 0) continue;
+            const int c = report.components++;
+            component[start] = c;
+            queue.assign(1, start);
+            for (size_t head = 0; head < queue.size(); ++head) {
+                const int f = queue[head];
+                for (int k = 0; k < acrossCount[f]; ++k) {
+                    const Across& a = across[f][k];
+                    const char required = flip[f] ^ static_cast<char>(a.same);
+                    if (component[a.face] < 0) {
+                        component[a.face] = c;
+                        flip[a.face] = required;
+                        queue.push_back(a.face);
+                    } else if (flip[a.face] != required) {
+                        throw InvalidInputError(
+                            "a connected component is not orientable (like a Moebius strip, no consistent orientation exists): "
+                            "input faces " + std::to_string(faceOrigin[f]) + " and " + std::to_string(faceOrigin[a.face]) +
+                            " disagree across the edge between vertices " + vertexAt(input, a.lo) + " and " + vertexAt(input, a.hi));
+                    }
+                }
+            }
+        }
+        for (int f = 0; f < faceCount; ++f)
+            if (flip[f]) {
+                std::swap(faces[f][1], faces[f][2]);
+                ++report.flippedFaces;
+            }
+    }
+    report.componentAreas.assign(report.components, 0.0);
+    for (int f = 0; f < faceCount; ++f) {
+        const Face& t = faces[f];
+        const Vec3& a = input.vertices[t[0]];
+        report.componentAreas[component[f]] += 0.5 * (input.vertices[t[1]] - a).cross(input.vertices[t[2]] - a).norm();
+    }
+
+    // 5. Non-manifold vertices: corners of the faces around a vertex are joined across the
+    // (manifold) edges they share; each resulting fan beyond the one of the vertex's first face
+    // gets its own copy of the vertex.
+    std::vector<int> copySource;  // working vertex n + i is a copy of input vertex copySource[i]
+    {
+        DisjointSets corners(3 * faceCount);
+        for (int f = 0; f < faceCount; ++f)
+            for (int k = 0; k < acrossCount[f]; ++k) {
+                const Across& a = across[f][k];
+                if (a.face < f) continue;  // each shared edge once
+                for (int v : {a.lo, a.hi}) corners.unite(3 * f + cornerOf(faces[f], v), 3 * a.face + cornerOf(faces[a.face], v));
+            }
+        std::vector<int> firstFan(n, -1);     // per vertex: root of its first fan
+        std::vector<int> copyOfFan(3 * faceCount, -1);  // per fan root (other than a first fan): its vertex
+        std::vector<char> split(n, 0);
+        for (int f = 0; f < faceCount; ++f)
+            for (int k = 0; k < 3; ++k) {
+                const int v = faces[f][k];
+                const int root = corners.find(3 * f + k);
+                if (firstFan[v] < 0) firstFan[v] = root;
+                if (root == firstFan[v]) continue;
+                if (copyOfFan[root] < 0) {
+                    copyOfFan[root] = n + static_cast<int>(copySource.size());
+                    copySource.push_back(v);
+                    split[v] = 1;
+                }
+                faces[f][k] = copyOfFan[root];
+            }
+        report.splitNonManifoldVertices = static_cast<int>(std::count(split.begin(), split.end(), 1));
+        report.addedVertexCopies = static_cast<int>(copySource.size());
+    }
+
+    // 6. Compact: referenced vertices in their original order, then the split copies.
+    const int working = n + static_cast<int>(copySource.size());
+    std::vector<int> newIndex(working, -1);
     for (const Face& t : faces)
         for (int c : t) newIndex[c] = 0;
     TriMesh clean;
-    for (int v = 0; v < n; ++v)
+    clean.vertices.reserve(working);
+    for (int v = 0; v < working; ++v)
         if (newIndex[v] == 0) {
             newIndex[v] = clean.vertexCount();
-            clean.vertices.push_back(input.vertices[v]);
+            clean.vertices.push_back(input.vertices[v < n ? v : copySource[v - n]]);
         }
-    report.removedUnreferencedVertices = n - clean.vertexCount();
-    report.cleanIndex = newIndex;  // -1 exactly for the removed vertices
+    report.cleanIndex.assign(n, -1);
+    for (int v = 0; v < n; ++v) {
+        report.cleanIndex[v] = newIndex[rep[v]];
+        if (rep[v] == v && newIndex[v] < 0) ++report.removedUnreferencedVertices;
+    }
     clean.faces.reserve(faces.size());
     for (const Face& t : faces) clean.faces.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
 
+    if (report.mergedDuplicateVertices > 0)
+        report.notes.push_back("merged " + std::to_string(report.mergedDuplicateVertices) + " duplicate vertices (same coordinates)");
     if (report.removedUnreferencedVertices > 0)
         report.notes.push_back("removed " + std::to_string(report.removedUnreferencedVertices) + " unreferenced vertices");
     if (report.removedDegenerateFaces > 0)
         report.notes.push_back("removed " + std::to_string(report.removedDegenerateFaces) + " degenerate (zero-area) faces");
     if (report.removedDuplicateFaces > 0)
         report.notes.push_back("removed " + std::to_string(report.removedDuplicateFaces) + " duplicate faces");
+    if (report.flippedFaces > 0)
+        report.notes.push_back("flipped " + std::to_string(report.flippedFaces) +
+                               " faces to orient each connected component consistently (with its first face)");
+    if (report.splitNonManifoldVertices > 0)
+        report.notes.push_back("split " + std::to_string(report.splitNonManifoldVertices) +
+                               " non-manifold vertices (faces forming several fans) into one vertex per fan (" +
+                               std::to_string(report.addedVertexCopies) + " vertices added)");
+    if (report.components > 1) {
+        const double total = std::accumulate(report.componentAreas.begin(), report.componentAreas.end(), 0.0);
+        const double smallest = *std::min_element(report.componentAreas.begin(), report.componentAreas.end());
+        std::ostringstream s;
+        s << "the mesh has " << report.components << " connected components (kept; the smallest has "
+          << std::setprecision(3) << (total > 0 ? 100.0 * smallest / total : 0.0) << " % of the area)";
+        report.notes.push_back(s.str());
+    }
     return clean;
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <map>
 
 using namespace fieldcvt;
 
@@ -67,4 +68,279 @@ TEST(MeshCheck, RemovesUnreferencedDegenerateAndDuplicateFaces)
     EXPECT_EQ(clean.faceCount(), 8);
     EXPECT_EQ(clean.vertexCount(), 9);
     EXPECT_EQ(report.notes.size(), 3u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Repairs (issue 6): each one counted and reported as a note, never silent.
+
+namespace {
+
+bool hasNote(const InputReport& report, const std::string& text)
+{
+    for (const std::string& note : report.notes)
+        if (note.find(text) != std::string::npos) return true;
+    return false;
+}
+
+std::string allNotes(const InputReport& report)
+{
+    std::string s;
+    for (const std::string& note : report.notes) s += note + "\n";
+    return s;
+}
+
+// Every input vertex that survives maps to a clean vertex at the same place.
+void expectCleanIndexConsistent(const TriMesh& input, const TriMesh& clean, const InputReport& report)
+{
+    ASSERT_EQ(report.cleanIndex.size(), input.vertices.size());
+    for (int v = 0; v < input.vertexCount(); ++v) {
+        const int c = report.cleanIndex[v];
+        if (c < 0) continue;
+        ASSERT_LT(c, clean.vertexCount());
+        EXPECT_EQ(clean.vertices[c], input.vertices[v]) << "input vertex " << v;
+    }
+}
+
+// Across every edge shared by two faces, the faces run in opposite directions.
+bool consistentlyOriented(const TriMesh& m)
+{
+    std::map<std::pair<int, int>, int> directed;
+    for (const Face& t : m.faces)
+        for (int k = 0; k < 3; ++k)
+            if (++directed[{t[k], t[(k + 1) % 3]}] > 1) return false;
+    return true;
+}
+
+// Closed cone: apex at `apex`, a ring of `k` vertices and a cap centre at height `dir`.
+void addCone(TriMesh& m, const Vec3& apex, double dir, int k, int apexIndex = -1)
+{
+    const double pi = 3.14159265358979323846;
+    const int a = apexIndex >= 0 ? apexIndex : m.vertexCount();
+    if (apexIndex < 0) m.vertices.push_back(apex);
+    const int ring = m.vertexCount();
+    for (int i = 0; i < k; ++i)
+        m.vertices.push_back(apex + Vec3(0.5 * std::cos(2 * pi * i / k), 0.5 * std::sin(2 * pi * i / k), dir));
+    const int cap = m.vertexCount();
+    m.vertices.push_back(apex + Vec3(0, 0, dir));
+    for (int i = 0; i < k; ++i) {
+        const int p = ring + i, q = ring + (i + 1) % k;
+        if (dir > 0) {
+            m.faces.push_back({a, q, p});
+            m.faces.push_back({cap, p, q});
+        } else {
+            m.faces.push_back({a, p, q});
+            m.faces.push_back({cap, q, p});
+        }
+    }
+}
+
+}  // namespace
+
+TEST(MeshCheck, MergesExactlyDuplicateVerticesFirst)
+{
+    // A triangle soup: every face has its own three vertices.
+    const TriMesh grid = testmesh::planeGrid(3);
+    TriMesh soup;
+    for (const Face& t : grid.faces) {
+        Face s;
+        for (int k = 0; k < 3; ++k) {
+            s[k] = soup.vertexCount();
+            soup.vertices.push_back(grid.vertices[t[k]]);
+        }
+        soup.faces.push_back(s);
+    }
+    InputReport report;
+    const TriMesh clean = prepareInput(soup, report);
+    EXPECT_EQ(clean.vertexCount(), grid.vertexCount());
+    EXPECT_EQ(clean.faceCount(), grid.faceCount());
+    EXPECT_EQ(report.mergedDuplicateVertices, soup.vertexCount() - grid.vertexCount());
+    EXPECT_EQ(report.removedUnreferencedVertices, 0);
+    EXPECT_EQ(report.components, 1);
+    EXPECT_TRUE(hasNote(report, "merged " + std::to_string(report.mergedDuplicateVertices) + " duplicate vertices"))
+        << allNotes(report);
+    EXPECT_FALSE(hasNote(report, "components")) << allNotes(report);
+    expectCleanIndexConsistent(soup, clean, report);
+    EXPECT_TRUE(consistentlyOriented(clean));
+}
+
+TEST(MeshCheck, MergedVerticesCanMakeFacesDegenerateOrDuplicate)
+{
+    TriMesh m = testmesh::planeGrid(1);     // 0 (0,0)  1 (1,0)  2 (0,1)  3 (1,1)
+    m.vertices.emplace_back(1, 0, 0);       // 4: copy of 1
+    m.vertices.emplace_back(1, 1, 0);       // 5: copy of 3
+    m.faces.push_back({0, 4, 5});           // the first face again, through the copies
+    m.faces.push_back({1, 4, 3});           // repeated corner once merged
+    InputReport report;
+    const TriMesh clean = prepareInput(m, report);
+    EXPECT_EQ(clean.faceCount(), 2);
+    EXPECT_EQ(clean.vertexCount(), 4);
+    EXPECT_EQ(report.mergedDuplicateVertices, 2);
+    EXPECT_EQ(report.removedDuplicateFaces, 1);
+    EXPECT_EQ(report.removedDegenerateFaces, 1);
+    EXPECT_EQ(report.cleanIndex[4], report.cleanIndex[1]);
+    EXPECT_EQ(report.cleanIndex[5], report.cleanIndex[3]);
+    expectCleanIndexConsistent(m, clean, report);
+}
+
+TEST(MeshCheck, FlipsInconsistentFacesPerComponent)
+{
+    TriMesh m = testmesh::torus(12, 8);
+    int flipped = 0;
+    for (int f = 1; f < m.faceCount(); f += 3) {
+        std::swap(m.faces[f][1], m.faces[f][2]);
+        ++flipped;
+    }
+    InputReport report;
+    TriMesh clean = prepareInput(m, report);
+    EXPECT_EQ(report.flippedFaces, flipped);
+    EXPECT_TRUE(consistentlyOriented(clean));
+    EXPECT_EQ(clean.faces, testmesh::torus(12, 8).faces);  // back to the original orientation
+    EXPECT_TRUE(hasNote(report, "flipped " + std::to_string(flipped) + " faces")) << allNotes(report);
+
+    // The first face decides: flipping it flips the rest of its component instead.
+    TriMesh first = testmesh::torus(12, 8);
+    std::swap(first.faces[0][1], first.faces[0][2]);
+    InputReport firstReport;
+    clean = prepareInput(first, firstReport);
+    EXPECT_EQ(firstReport.flippedFaces, first.faceCount() - 1);
+    EXPECT_TRUE(consistentlyOriented(clean));
+    EXPECT_EQ(clean.faces[0], first.faces[0]);
+}
+
+TEST(MeshCheck, OrientsEachComponentOnItsOwn)
+{
+    // Two tori, the second one entirely reversed: each is consistent on its own, nothing flips.
+    TriMesh m = testmesh::torus(12, 8);
+    const TriMesh second = testmesh::torus(12, 8, 1.0, 0.35);
+    const int offset = m.vertexCount();
+    for (const Vec3& p : second.vertices) m.vertices.push_back(p + Vec3(5, 0, 0));
+    for (const Face& t : second.faces) m.faces.push_back({t[0] + offset, t[2] + offset, t[1] + offset});
+    // ... and one face of the second torus flipped against its neighbours.
+    std::swap(m.faces[second.faceCount() + 7][1], m.faces[second.faceCount() + 7][2]);
+    InputReport report;
+    const TriMesh clean = prepareInput(m, report);
+    EXPECT_EQ(report.flippedFaces, 1);
+    EXPECT_EQ(report.components, 2);
+    ASSERT_EQ(report.componentAreas.size(), 2u);
+    EXPECT_NEAR(report.componentAreas[0], report.componentAreas[1], 1e-9 * report.componentAreas[0]);
+    EXPECT_TRUE(hasNote(report, "2 connected components")) << allNotes(report);
+    EXPECT_TRUE(consistentlyOriented(clean));
+}
+
+TEST(MeshCheck, RejectsMoebiusStrip)
+{
+    const double pi = 3.14159265358979323846;
+    const int n = 24;
+    TriMesh m;
+    for (int i = 0; i < n; ++i) {
+        const double u = 2 * pi * i / n;
+        for (double s : {-0.3, 0.3})
+            m.vertices.emplace_back((1 + s * std::cos(u / 2)) * std::cos(u), (1 + s * std::cos(u / 2)) * std::sin(u),
+                                    s * std::sin(u / 2));
+    }
+    // Vertex 2i is the -s rail, 2i + 1 the +s rail; after a full turn the rails swap.
+    for (int i = 0; i < n; ++i) {
+        const int a = 2 * i, b = 2 * i + 1;
+        const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+        m.faces.push_back({a, c, d});
+        m.faces.push_back({a, d, b});
+    }
+    const std::string error = errorOf(m);
+    EXPECT_NE(error.find("not orientable"), std::string::npos) << error;
+    EXPECT_NE(error.find("Moebius"), std::string::npos) << error;
+    EXPECT_NE(error.find("between vertices"), std::string::npos) << error;
+}
+
+TEST(MeshCheck, SplitsNonManifoldVertexIntoOneVertexPerFan)
+{
+    // Two closed cones touching at their apex (vertex 0).
+    TriMesh m;
+    addCone(m, Vec3(0, 0, 0), 1.0, 8);
+    addCone(m, Vec3(0, 0, 0), -1.0, 8, 0);
+    InputReport report;
+    const TriMesh clean = prepareInput(m, report);
+    EXPECT_EQ(report.splitNonManifoldVertices, 1);
+    EXPECT_EQ(report.addedVertexCopies, 1);
+    EXPECT_EQ(clean.vertexCount(), m.vertexCount() + 1);
+    EXPECT_EQ(clean.faceCount(), m.faceCount());
+    EXPECT_EQ(report.components, 2);
+    EXPECT_TRUE(hasNote(report, "split 1 non-manifold vertices")) << allNotes(report);
+    EXPECT_TRUE(hasNote(report, "2 connected components")) << allNotes(report);
+    // The apex maps to the copy of its first fan (the upper cone); the lower cone uses the new,
+    // last vertex, at the same place.
+    EXPECT_EQ(report.cleanIndex[0], 0);
+    EXPECT_EQ(clean.faces[0][0], 0);
+    EXPECT_EQ(clean.faces[m.faceCount() / 2][0], clean.vertexCount() - 1);
+    EXPECT_EQ(clean.vertices.back(), m.vertices[0]);
+    expectCleanIndexConsistent(m, clean, report);
+    // Idempotent: the copies coincide, so a second pass merges and splits them again, to the
+    // same mesh.
+    InputReport again;
+    const TriMesh twice = prepareInput(clean, again);
+    EXPECT_EQ(again.mergedDuplicateVertices, 1);
+    EXPECT_EQ(again.splitNonManifoldVertices, 1);
+    EXPECT_EQ(twice.vertices, clean.vertices);
+    EXPECT_EQ(twice.faces, clean.faces);
+}
+
+TEST(MeshCheck, SplitsBowtieVertexOfAnOpenPatch)
+{
+    // Two triangles sharing only vertex 0, the second given through a duplicate of vertex 0:
+    // merging comes first, then the split.
+    TriMesh m;
+    m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {-1, 0, 0}, {-1, -1, 0}};
+    m.faces = {{0, 1, 2}, {3, 4, 5}};
+    InputReport report;
+    const TriMesh clean = prepareInput(m, report);
+    EXPECT_EQ(report.mergedDuplicateVertices, 1);
+    EXPECT_EQ(report.splitNonManifoldVertices, 1);
+    EXPECT_EQ(clean.vertexCount(), 6);
+    EXPECT_EQ(report.cleanIndex[0], 0);
+    EXPECT_EQ(report.cleanIndex[3], 0);  // merged into 0, whose first fan is face 0's
+    expectCleanIndexConsistent(m, clean, report);
+}
+
+TEST(MeshCheck, KeepsNeedleFacesAndTinyFaces)
+{
+    TriMesh needle;
+    needle.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1e-9, 0}};
+    needle.faces = {{0, 1, 2}, {1, 0, 3}};
+    InputReport report;
+    EXPECT_EQ(prepareInput(needle, report).faceCount(), 2);
+    EXPECT_EQ(report.removedDegenerateFaces, 0);
+    EXPECT_TRUE(report.notes.empty()) << allNotes(report);
+
+    // Faces whose squared area underflows are still not zero-area.
+    InputReport tinyReport;
+    EXPECT_EQ(prepareInput(testmesh::planeGrid(2, 1e-150), tinyReport).faceCount(), 8);
+    EXPECT_EQ(tinyReport.removedDegenerateFaces, 0);
+}
+
+TEST(MeshCheck, ReportsComponentsAndTheSmallestShare)
+{
+    TriMesh m = testmesh::icosphere(1);
+    const TriMesh tiny = testmesh::icosphere(0);
+    const int offset = m.vertexCount();
+    for (const Vec3& p : tiny.vertices) m.vertices.push_back(p * 1e-3 + Vec3(3, 0, 0));
+    for (const Face& t : tiny.faces) m.faces.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    InputReport report;
+    const TriMesh clean = prepareInput(m, report);
+    EXPECT_EQ(report.components, 2);
+    EXPECT_EQ(clean.faceCount(), m.faceCount());
+    EXPECT_TRUE(hasNote(report, "2 connected components (kept; the smallest has")) << allNotes(report);
+    EXPECT_LT(report.componentAreas[1], 1e-5 * report.componentAreas[0]);
+}
+
+TEST(MeshCheck, CleanMeshPassesUntouched)
+{
+    const TriMesh m = testmesh::torus(10, 6);
+    InputReport report;
+    const TriMesh clean = prepareInput(m, report);
+    EXPECT_EQ(clean.vertices, m.vertices);
+    EXPECT_EQ(clean.faces, m.faces);
+    EXPECT_TRUE(report.notes.empty()) << allNotes(report);
+    EXPECT_EQ(report.components, 1);
+    std::vector<int> identity(m.vertexCount());
+    for (int v = 0; v < m.vertexCount(); ++v) identity[v] = v;
+    EXPECT_EQ(report.cleanIndex, identity);
 }
