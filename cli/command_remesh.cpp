@@ -1,18 +1,17 @@
 // `fcvt remesh IN OUT --vertices N ...`: read, remesh with the core, write, summarise, report.
 #include "arguments.h"
+#include "cli_common.h"
 #include "commands.h"
 #include "progress_printer.h"
 #include "report.h"
 
 #include "errors.h"
-#include "mesh_format.h"
 #include "mesh_io.h"
 #include "remesh.h"
 
 #include <chrono>
 #include <climits>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 namespace fieldcvt::cli {
@@ -25,35 +24,27 @@ void printUsage()
     std::printf(
         "Usage: fcvt remesh IN OUT --vertices N [options]\n"
         "\n"
-        "Remeshes the triangle mesh IN into OUT with about N vertices. Formats by extension:\n"
-        ".ply (written binary, double coordinates), .obj, .off, .stl.\n"
+        "Remeshes the triangle mesh IN into OUT with about N vertices: CVT iterations, then FCVT\n"
+        "iterations that also align the edges to a 6-RoSy direction field (E_CVT + lambda * E_field).\n"
+        "Formats by extension: .ply (written binary, double coordinates), .obj, .off, .stl. A .ply\n"
+        "OUT also gets the field at its vertices (nx ny nz, rosy_x rosy_y rosy_z) when one was used.\n"
         "\n"
         "Options:\n"
         "  --vertices N          target vertex count, >= 4 (required)\n"
-        "  --lambda L            weight of the field-alignment term, >= 0 (default %g: pure CVT)\n"
+        "  --field F             the field to align to: extrinsic (smooth, Instant Meshes),\n"
+        "                        curvature-max, curvature-min, or user (IN's PLY vertex properties\n"
+        "                        rosy_x rosy_y rosy_z) (default %s)\n"
+        "  --lambda L            weight of the field-alignment term, >= 0; 0 = pure CVT (default %g)\n"
         "  --cvt-iterations A    L-BFGS iterations on the CVT energy, >= 0 (default %d)\n"
-        "  --fcvt-iterations B   L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d)\n"
-        "  --seed S              seed of the initial sampling, >= 0 (default %llu); same seed, same output\n"
+        "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d)\n"
+        "  --seed S              seed of the sampling and the field, >= 0 (default %llu); same seed, same output\n"
         "  --threads T           OpenMP threads, >= 0 (default %d: all cores); output does not depend on it\n"
-        "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, warnings\n"
+        "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
+        "                        history, field singularities, warnings\n"
         "  --quiet               print nothing but errors\n"
         "  -h, --help            show this help\n",
-        defaults.lambda, defaults.cvtIterations, defaults.fcvtIterations,
-        static_cast<unsigned long long>(defaults.seed), defaults.threads);
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-//! What would make the final write fail, found before the long part rather than after it.
-void checkOutputPath(const std::string& path)
-{
-    checkMeshExtension(path);
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-        throw IOError(path + ": cannot write: directory " + parent.string() + " does not exist");
+        fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.cvtIterations,
+        defaults.fcvtIterations, static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
 RemeshParams paramsFrom(const Arguments& a)
@@ -61,6 +52,7 @@ RemeshParams paramsFrom(const Arguments& a)
     if (!a.has("vertices")) throw UsageError("remesh needs --vertices N (the target vertex count)");
     RemeshParams p;
     p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, 4, INT_MAX));
+    p.fieldSource = fieldOption(a, p.fieldSource, true);
     p.lambda = a.number("lambda", p.lambda, 0.0);
     p.cvtIterations = static_cast<int>(a.integer("cvt-iterations", p.cvtIterations, 0, INT_MAX));
     p.fcvtIterations = static_cast<int>(a.integer("fcvt-iterations", p.fcvtIterations, 0, INT_MAX));
@@ -71,9 +63,13 @@ RemeshParams paramsFrom(const Arguments& a)
 
 nlohmann::ordered_json paramsJson(const RemeshParams& p)
 {
-    return {{"vertices", p.vertexCount},           {"lambda", p.lambda},
-            {"lloyd_iterations", p.lloydIterations}, {"cvt_iterations", p.cvtIterations},
-            {"fcvt_iterations", p.fcvtIterations},   {"seed", p.seed},
+    return {{"vertices", p.vertexCount},
+            {"field", fieldSourceName(p.fieldSource)},
+            {"lambda", p.lambda},
+            {"lloyd_iterations", p.lloydIterations},
+            {"cvt_iterations", p.cvtIterations},
+            {"fcvt_iterations", p.fcvtIterations},
+            {"seed", p.seed},
             {"threads", p.threads}};
 }
 
@@ -81,7 +77,8 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
 
 int runRemesh(const std::vector<std::string>& args)
 {
-    const Arguments a(args, {"vertices", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads", "report"},
+    const Arguments a(args,
+                      {"vertices", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads", "report"},
                       {"quiet", "help"});
     if (a.flag("help")) {
         printUsage();
@@ -92,13 +89,18 @@ int runRemesh(const std::vector<std::string>& args)
                          " file arguments (try 'fcvt remesh --help')");
     const std::string& inPath = a.positional()[0];
     const std::string& outPath = a.positional()[1];
-    const RemeshParams params = paramsFrom(a);
+    RemeshParams params = paramsFrom(a);
     const bool quiet = a.flag("quiet");
+    if (params.fieldSource == FieldSource::User && !isPlyPath(inPath))
+        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
+                         inPath + " is not a .ply file");
     checkOutputPath(outPath);
 
     const auto start = std::chrono::steady_clock::now();
     MeshReadInfo readInfo;
-    const TriMesh input = readMesh(inPath, &readInfo);
+    VertexAttributes inputAttributes;
+    const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
+    if (params.fieldSource == FieldSource::User) params.userDirections = userField(inPath, inputAttributes);
     const double readSeconds = secondsSince(start);
 
     RemeshResult result;
@@ -112,7 +114,15 @@ int runRemesh(const std::vector<std::string>& args)
     }
 
     const auto writeStart = std::chrono::steady_clock::now();
-    writeMesh(outPath, result.mesh);
+    VertexAttributes outputAttributes;
+    const bool writeField = !result.outputDirections.empty() && isPlyPath(outPath) &&
+                            result.outputDirections.size() == result.mesh.vertices.size() &&
+                            result.outputNormals.size() == result.mesh.vertices.size();
+    if (writeField) {
+        outputAttributes.normals = result.outputNormals;
+        outputAttributes.rosy = result.outputDirections;
+    }
+    writeMesh(outPath, result.mesh, writeField ? &outputAttributes : nullptr);
     const double writeSeconds = secondsSince(writeStart);
 
     std::vector<std::string> warnings;
@@ -127,17 +137,22 @@ int runRemesh(const std::vector<std::string>& args)
         for (const StageTime& stage : result.stageTimes) times[stage.stage] = stage.seconds;
         times["write"] = writeSeconds;
         times["total"] = totalSeconds;
+        nlohmann::ordered_json field = fieldJson(params.fieldSource, result.singularities);
+        // The core computes a field only when it is used (lambda > 0 and FCVT iterations).
+        field["computed"] = !result.outputDirections.empty() || !result.singularities.empty();
         const nlohmann::ordered_json report = {{"input_file", inPath},
-                                       {"output_file", outPath},
-                                       {"vertices", result.mesh.vertexCount()},
-                                       {"faces", result.mesh.faceCount()},
-                                       {"evaluations", result.evaluations},
-                                       {"time_s", times},
-                                       {"metrics", metricsJson(result.metrics)},
-                                       {"input", topologyJson(result.inputTopology)},
-                                       {"output", topologyJson(outputTopology)},
-                                       {"params", paramsJson(params)},
-                                       {"warnings", warnings}};
+                                               {"output_file", outPath},
+                                               {"vertices", result.mesh.vertexCount()},
+                                               {"faces", result.mesh.faceCount()},
+                                               {"evaluations", result.evaluations},
+                                               {"time_s", times},
+                                               {"metrics", metricsJson(result.metrics)},
+                                               {"input", topologyJson(result.inputTopology)},
+                                               {"output", topologyJson(outputTopology)},
+                                               {"params", paramsJson(params)},
+                                               {"field", field},
+                                               {"energy_history", energyHistoryJson(result.energyHistory)},
+                                               {"warnings", warnings}};
         writeJsonFile(*reportPath, report);
     }
 

@@ -8,5 +8,7 @@ namespace fieldcvt::cli {
 
 int runRemesh(const std::vector<std::string>& args);
 int runMetrics(const std::vector<std::string>& args);
+int runField(const std::vector<std::string>& args);
+int runCompare(const std::vector<std::string>& args);
 
 }  // namespace fieldcvt::cli

@@ -18,6 +18,8 @@ const char* const usage =
     "\n"
     "Commands:\n"
     "  remesh IN OUT --vertices N [options]   remesh IN into OUT with about N vertices\n"
+    "  field IN OUT.ply [options]             the 6-RoSy direction field of IN and its singularities\n"
+    "  compare IN --vertices N [options]      CVT vs FCVT on IN, one row per method (paper's Table 2)\n"
     "  metrics MESH [--ref INPUT] [--json]    quality metrics and topology of a mesh\n"
     "\n"
     "Options:\n"
@@ -50,6 +52,8 @@ int run(const std::vector<std::string>& args)
     }
     if (command == "remesh") return runRemesh(rest);
     if (command == "metrics") return runMetrics(rest);
+    if (command == "field") return runField(rest);
+    if (command == "compare") return runCompare(rest);
     throw UsageError("unknown command '" + command + "' (try 'fcvt --help')");
 }
 

@@ -40,6 +40,28 @@ nlohmann::ordered_json topologyJson(const TopologySummary& t)
             {"non_manifold_vertices", t.nonManifoldVertices}};
 }
 
+nlohmann::ordered_json energyHistoryJson(const std::vector<EnergyRecord>& history)
+{
+    nlohmann::ordered_json j = nlohmann::ordered_json::array();
+    for (const EnergyRecord& r : history)
+        j.push_back({{"phase", r.phase}, {"e_cvt", numberOrNull(r.cvt)}, {"e_field", numberOrNull(r.field)}});
+    return j;
+}
+
+nlohmann::ordered_json fieldJson(FieldSource source, const std::vector<Singularity>& singularities, std::size_t maxPositions)
+{
+    long long indexSum = 0;
+    nlohmann::ordered_json positions = nlohmann::ordered_json::array();
+    for (const Singularity& s : singularities) {
+        indexSum += s.index;
+        if (positions.size() < maxPositions) positions.push_back({s.position.x(), s.position.y(), s.position.z()});
+    }
+    return {{"source", fieldSourceName(source)},
+            {"singularities", singularities.size()},
+            {"index_sum", indexSum},
+            {"singularity_positions", positions}};
+}
+
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json)
 {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);

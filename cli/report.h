@@ -1,7 +1,9 @@
 #pragma once
 // The JSON vocabulary of the CLI, shared by `fcvt remesh --report` and `fcvt metrics --json`
 // (other tooling reads these key names: keep them stable).
+#include "field.h"
 #include "metrics.h"
+#include "remesh.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +16,14 @@ namespace fieldcvt::cli {
 nlohmann::ordered_json metricsJson(const QualityMetrics& metrics);
 //! genus, boundary_loops, components, manifold, orientable (+ non-manifold counts).
 nlohmann::ordered_json topologyJson(const TopologySummary& topology);
+
+//! [{"phase", "e_cvt", "e_field"}, ...] in run order (phases "lloyd", "cvt", "fcvt").
+nlohmann::ordered_json energyHistoryJson(const std::vector<EnergyRecord>& history);
+
+//! "source", "singularities" (count), "index_sum" (sixths of a turn) and
+//! "singularity_positions" ([[x, y, z], ...], the first `maxPositions`).
+nlohmann::ordered_json fieldJson(FieldSource source, const std::vector<Singularity>& singularities,
+                                 std::size_t maxPositions = 1000);
 
 //! Writes `json` (indented, trailing newline) to `path`; throws IOError on failure.
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json);

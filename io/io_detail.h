@@ -18,7 +18,8 @@ void writeFileBytes(const std::string& path, const std::string& bytes);
 // Readers, one per format. `path` is only used in messages (and by vcglib to open the file).
 TriMesh readObj(const std::string& path, const std::string& text, MeshReadInfo& info);
 TriMesh readOff(const std::string& path, const std::string& text, MeshReadInfo& info);
-TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info);
+//! Also fills `attributes` (normals, rosy) from the vertex properties the file has.
+TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info, VertexAttributes& attributes);
 TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo& info);
 
 // Writers, one per format; they never see an attribute vector of the wrong size.

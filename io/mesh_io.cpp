@@ -81,20 +81,28 @@ void checkResult(const std::string& path, const TriMesh& mesh)
 
 void checkMeshExtension(const std::string& path) { formatOf(path); }
 
-TriMesh readMesh(const std::string& path, MeshReadInfo* info)
+TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* attributes)
 {
     const Format format = formatOf(path);
     checkReadable(path);
     MeshReadInfo local;
     MeshReadInfo& out = info ? *info : local;
+    VertexAttributes localAttributes;
+    VertexAttributes& attrs = attributes ? *attributes : localAttributes;
+    attrs = VertexAttributes{};
     TriMesh mesh;
     switch (format) {
-    case Format::Ply: mesh = io_detail::readPly(path, io_detail::readFileBytes(path), out); break;
+    case Format::Ply: mesh = io_detail::readPly(path, io_detail::readFileBytes(path), out, attrs); break;
     case Format::Obj: mesh = io_detail::readObj(path, io_detail::readFileBytes(path), out); break;
     case Format::Off: mesh = io_detail::readOff(path, io_detail::readFileBytes(path), out); break;
     case Format::Stl: mesh = io_detail::readStl(path, io_detail::readFileBytes(path), out); break;
     }
     checkResult(path, mesh);
+    for (auto* a : {&attrs.normals, &attrs.rosy})
+        if (!a->empty() && a->size() != mesh.vertices.size()) {
+            a->clear();  // e.g. several vertex elements, not all with the properties
+            out.notes.push_back("per-vertex properties not given for every vertex: ignored");
+        }
     if (out.polygonsTriangulated > 0)
         out.notes.push_back("triangulated " + std::to_string(out.polygonsTriangulated) + " polygons");
     return mesh;

@@ -14,15 +14,19 @@ struct MeshReadInfo {
     std::vector<std::string> notes;
 };
 
-//! Optional per-vertex data written next to the geometry (PLY writes all, others what they can).
+//! Optional per-vertex data next to the geometry (PLY writes all, others what they can; only
+//! PLY files are read back with them).
 struct VertexAttributes {
     std::vector<Vec3> normals;  //!< "nx ny nz"
-    std::vector<Vec3> rosy;     //!< "rosy_x rosy_y rosy_z" (PLY only)
+    std::vector<Vec3> rosy;     //!< "rosy_x rosy_y rosy_z" (PLY only): the 6-RoSy field's representative
 };
 
 //! Reads PLY/OBJ/OFF/STL by extension (case-insensitive). Throws IOError with one clear line
 //! for a missing, unreadable, truncated or malformed file, or one with no triangles.
-TriMesh readMesh(const std::string& path, MeshReadInfo* info = nullptr);
+//! With `attributes`, a PLY file's per-vertex `nx ny nz` and `rosy_x rosy_y rosy_z` properties
+//! (all three of a group, scalar) fill `normals` and `rosy`, one per vertex; a group the file
+//! does not have (and every group, for other formats) is left empty.
+TriMesh readMesh(const std::string& path, MeshReadInfo* info = nullptr, VertexAttributes* attributes = nullptr);
 
 //! Writes by extension (PLY binary, OBJ, OFF, STL). Throws IOError on failure.
 void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttributes* attributes = nullptr);

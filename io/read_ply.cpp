@@ -153,7 +153,7 @@ std::size_t parseHeader(const std::string& path, const std::string& bytes, Encod
 
 }  // namespace
 
-TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info)
+TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info, VertexAttributes& attributes)
 {
     Encoding encoding = Encoding::Ascii;
     std::vector<Element> elements;
@@ -175,18 +175,46 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
             if (isFace && p.countSize > 0 && !p.isFloat && (p.name == "vertex_indices" || p.name == "vertex_index")) indexList = static_cast<int>(i);
         }
         if (isVertex && std::count(coordinate, coordinate + 3, -1) > 0) fail(path, "PLY vertices lack an x, y or z property");
+        // Optional per-vertex groups: used when all three are scalar properties, noted otherwise.
+        struct Group {
+            const char* names[3];
+            std::vector<Vec3>* target;
+            int property[3];
+            bool use;
+        };
+        Group groups[2] = {{{"nx", "ny", "nz"}, &attributes.normals, {-1, -1, -1}, false},
+                           {{"rosy_x", "rosy_y", "rosy_z"}, &attributes.rosy, {-1, -1, -1}, false}};
+        for (Group& g : groups) {
+            if (!isVertex) break;
+            int found = 0, lists = 0;
+            for (std::size_t i = 0; i < e.properties.size(); ++i)
+                for (int k = 0; k < 3; ++k)
+                    if (e.properties[i].name == g.names[k]) {
+                        if (e.properties[i].countSize > 0) ++lists;
+                        else if (g.property[k] < 0) g.property[k] = static_cast<int>(i), ++found;
+                    }
+            g.use = found == 3 && lists == 0;
+            if (!g.use && (found > 0 || lists > 0))
+                info.notes.push_back(std::string("PLY vertex properties ") + g.names[0] + " " + g.names[1] + " " + g.names[2] +
+                                     " incomplete or not scalar: ignored");
+            if (g.use) g.target->reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
+        }
         if (isFace && indexList < 0) fail(path, "PLY faces lack a vertex_indices list");
         if (isVertex) mesh.vertices.reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
         std::vector<int> polygon;
         // Without properties an element has no bytes: nothing to read, however many it claims.
         for (long long n = 0; n < e.count && !e.properties.empty(); ++n) {
             double xyz[3] = {0, 0, 0};
+            Vec3 groupValue[2] = {Vec3::Zero(), Vec3::Zero()};
             for (std::size_t i = 0; i < e.properties.size(); ++i) {
                 const Property& p = e.properties[i];
                 if (p.countSize == 0) {
                     const double v = in.value(p.size, p.isFloat, p.isSigned);
-                    for (int k = 0; k < 3; ++k)
+                    for (int k = 0; k < 3; ++k) {
                         if (coordinate[k] == static_cast<int>(i)) xyz[k] = v;
+                        for (int g = 0; g < 2; ++g)
+                            if (groups[g].use && groups[g].property[k] == static_cast<int>(i)) groupValue[g][k] = v;
+                    }
                     continue;
                 }
                 const double items = in.value(p.countSize, false, p.countSigned);
@@ -205,7 +233,11 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                 for (std::size_t k = 1; k + 1 < polygon.size(); ++k) mesh.faces.push_back({polygon[0], polygon[k], polygon[k + 1]});
                 if (polygon.size() > 3) ++info.polygonsTriangulated;
             }
-            if (isVertex) mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+            if (isVertex) {
+                mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+                for (int g = 0; g < 2; ++g)
+                    if (groups[g].use) groups[g].target->push_back(groupValue[g]);
+            }
         }
     }
     return mesh;

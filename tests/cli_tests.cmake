@@ -1,5 +1,6 @@
 # End-to-end tests of the `fcvt` command (scripts in tests/cli/, python3 only). The quality bars
-# are those of issue 2 (lambda = 0, 130 CVT iterations); they are labelled slow but run by default.
+# are those of issue 2 (a pure CVT: lambda = 0, 130 CVT iterations, no FCVT iterations, passed
+# explicitly); they are labelled slow but run by default.
 if(NOT TARGET fcvt)
   return()
 endif()
@@ -29,6 +30,17 @@ add_test(NAME cli_determinism
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_determinism.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 2000
           ${FCVT_CLI_WORK}/determinism)
 
-set_tests_properties(cli_usage_errors cli_metrics_json PROPERTIES LABELS "cli" TIMEOUT 600)
+# The 6-RoSy field (issue 3) and the field-aligned remeshing (issue 4) through the CLI.
+add_test(NAME cli_field_singularities
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_field.py $<TARGET_FILE:fcvt> ${FCVT_CLI_WORK}/field
+          ${FCVT_RESOURCES}/torus.obj 0 ${FCVT_RESOURCES}/fertility.off -6)
+add_test(NAME cli_remesh_field
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_remesh_field.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}
+          ${FCVT_CLI_WORK}/remesh_field)
+add_test(NAME cli_compare_torus_1000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_compare.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/torus.obj 1000 300)
+
+set_tests_properties(cli_usage_errors cli_metrics_json cli_field_singularities PROPERTIES LABELS "cli" TIMEOUT 600)
+set_tests_properties(cli_remesh_field cli_compare_torus_1000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
 set_tests_properties(cli_quality_fertility_3000 cli_quality_torus_1000 cli_quality_bunny_5000 cli_determinism
   PROPERTIES LABELS "cli;slow" TIMEOUT 1200)

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -197,6 +198,68 @@ TEST_F(IoTest, PlyWithAttributes)
 
     attributes.rosy.pop_back();
     EXPECT_THROW(writeMesh(file, grid, &attributes), IOError);
+}
+
+TEST_F(IoTest, PlyAttributesAreReadBack)
+{
+    const TriMesh grid = testmesh::planeGrid(3);
+    VertexAttributes written;
+    for (std::size_t v = 0; v < grid.vertices.size(); ++v) {
+        written.normals.push_back(Vec3(0, 0, 1));
+        written.rosy.push_back(Vec3(std::cos(0.1 * v), std::sin(0.1 * v), 0));
+    }
+    const auto file = path("attr.ply");
+    writeMesh(file, grid, &written);
+    VertexAttributes read;
+    MeshReadInfo info;
+    const TriMesh back = readMesh(file, &info, &read);
+    EXPECT_EQ(back.faces, grid.faces);
+    ASSERT_EQ(read.normals.size(), grid.vertices.size());
+    ASSERT_EQ(read.rosy.size(), grid.vertices.size());
+    for (std::size_t v = 0; v < grid.vertices.size(); ++v) {
+        EXPECT_EQ(read.normals[v], written.normals[v].cast<float>().cast<double>());
+        EXPECT_EQ(read.rosy[v], written.rosy[v].cast<float>().cast<double>());  // stored as float
+    }
+    EXPECT_TRUE(info.notes.empty());
+
+    // Only the normals: rosy stays empty; a later call clears what an earlier one filled.
+    VertexAttributes normalsOnly;
+    normalsOnly.normals = written.normals;
+    writeMesh(file, grid, &normalsOnly);
+    readMesh(file, nullptr, &read);
+    EXPECT_EQ(read.normals.size(), grid.vertices.size());
+    EXPECT_TRUE(read.rosy.empty());
+
+    // Other formats carry no attributes back.
+    writeMesh(path("attr.obj"), grid, &written);
+    readMesh(path("attr.obj"), nullptr, &read);
+    EXPECT_TRUE(read.normals.empty() && read.rosy.empty());
+}
+
+TEST_F(IoTest, AsciiPlyRosyInAnyOrderAndIncompleteGroups)
+{
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float rosy_z\nproperty float x\nproperty float rosy_x\n"
+        "property float y\nproperty uchar red\nproperty float z\nproperty float rosy_y\nelement face 2\n"
+        "property list uchar int vertex_indices\nend_header\n";
+    const std::string body = "0 0 1 0 9 0 0\n0 1 1 0 9 0 0\n0 1 0 1 9 0 1\n0 0 0 1 9 0 1\n3 0 1 2\n3 0 2 3\n";
+    VertexAttributes read;
+    expectSquare(readMesh(write("r.ply", header + body), nullptr, &read));
+    ASSERT_EQ(read.rosy.size(), 4u);
+    EXPECT_EQ(read.rosy[0], Vec3(1, 0, 0));
+    EXPECT_EQ(read.rosy[2], Vec3(0, 1, 0));
+    EXPECT_TRUE(read.normals.empty());
+
+    // rosy_x and rosy_y without rosy_z: not used, and said so.
+    const std::string partial = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                "property float z\nproperty float rosy_x\nproperty float rosy_y\nelement face 2\n"
+                                "property list uchar int vertex_indices\nend_header\n"
+                                "0 0 0 1 0\n1 0 0 1 0\n1 1 0 1 0\n0 1 0 1 0\n3 0 1 2\n3 0 2 3\n";
+    MeshReadInfo info;
+    expectSquare(readMesh(write("p.ply", partial), &info, &read));
+    EXPECT_TRUE(read.rosy.empty());
+    ASSERT_EQ(info.notes.size(), 1u);
+    EXPECT_NE(info.notes[0].find("rosy_x"), std::string::npos);
 }
 
 TEST_F(IoTest, WriteErrors)

@@ -1,4 +1,5 @@
-"""Remeshes a bundled mesh with fcvt (lambda = 0, 130 CVT iterations) and checks the issue's
+"""Remeshes a bundled mesh with fcvt as a pure CVT (lambda = 0, 130 CVT iterations, 0 FCVT
+iterations, all explicit: the defaults are FCVT's) and checks the issue's
 quality bars three ways: the run's JSON report, `fcvt metrics --ref` on the written file, and a
 pure-Python measurement of that file.
 Usage: check_quality.py FCVT INPUT VERTICES WORK_DIR [BAR ...]
@@ -18,7 +19,7 @@ out = os.path.join(work, f"{name}_{vertices}.ply")
 report_path = os.path.join(work, f"{name}_{vertices}.json")
 
 print(run_ok([fcvt, "remesh", source, out, "--vertices", str(vertices), "--lambda", "0",
-              "--cvt-iterations", "130", "--report", report_path]))
+              "--cvt-iterations", "130", "--fcvt-iterations", "0", "--report", report_path]))
 with open(report_path) as f:
     report = json.load(f)
 measured = metrics_json(fcvt, out, ref=source)

@@ -53,6 +53,18 @@ for args, fragment in [
     (["remesh", torus, out, "--vertices", "100", "--bogus"], "--bogus"),
     (["remesh", torus, out, "--vertices", "100", "--vertices", "200"], "twice"),
     (["remesh", torus, out, "--vertices", "100", "--quiet=yes"], "--quiet"),
+    (["remesh", torus, out, "--vertices", "100", "--field", "smooth"], "--field"),
+    (["remesh", torus, out, "--vertices", "100", "--field"], "needs a value"),
+    (["remesh", torus, out, "--vertices", "100", "--field", "user"], "rosy_x"),
+    (["field", torus], "input and an output"),
+    (["field", torus, os.path.join(work, "field.obj")], ".ply"),
+    (["field", torus, os.path.join(work, "field.ply"), "--field", "curvature"], "--field"),
+    (["field", torus, os.path.join(work, "field.ply"), "--seed", "x"], "--seed"),
+    (["field", torus, os.path.join(work, "field.ply"), "--vertices", "10"], "--vertices"),
+    (["compare", torus], "--vertices"),
+    (["compare", "--vertices", "100"], "exactly one"),
+    (["compare", torus, "--vertices", "100", "--field", "none"], "--field"),
+    (["compare", torus, "--vertices", "100", "--lambda", "-0.1"], "--lambda"),
     (["metrics"], "exactly one"),
     (["metrics", torus, "--ref"], "needs a value"),
     (["metrics", torus, "-x"], "-x"),
@@ -69,6 +81,9 @@ empty = write("empty.stl", b"")
 cloud = write("cloud.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\n")
 nan_mesh = write("nan.obj", b"v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n")
 missing = os.path.join(work, "missing.ply")
+plain_ply = write("plain.ply", b"ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                  b"property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                  b"0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
 for args, fragment in [
     (["remesh", missing, out, "--vertices", "100"], missing),
     (["remesh", garbage, out, "--vertices", "100"], garbage),
@@ -79,6 +94,11 @@ for args, fragment in [
     (["remesh", torus, os.path.join(work, "out.xyz"), "--vertices", "100"], "out.xyz"),
     (["remesh", nan_mesh, out, "--vertices", "100", "--quiet"], ""),
     (["remesh", torus, os.path.join(work, "no", "such", "dir", "out.ply"), "--vertices", "100", "--quiet"], "out.ply"),
+    (["remesh", plain_ply, out, "--vertices", "100", "--field", "user"], "rosy_x rosy_y rosy_z"),
+    (["field", plain_ply, os.path.join(work, "field.ply"), "--field", "user"], "rosy_x rosy_y rosy_z"),
+    (["field", missing, os.path.join(work, "field.ply")], missing),
+    (["field", torus, os.path.join(work, "no", "dir", "field.ply")], "field.ply"),
+    (["compare", missing, "--vertices", "100"], missing),
     (["metrics", missing], missing),
     (["metrics", torus, "--ref", truncated], truncated),
     (["metrics", work], work),
@@ -87,7 +107,9 @@ for args, fragment in [
 
 # Help and version.
 for args, text in [(["--help"], "Usage: fcvt <command>"), (["-h"], "Usage: fcvt <command>"),
-                   (["remesh", "--help"], "--cvt-iterations"), (["metrics", "--help"], "--ref"),
+                   (["remesh", "--help"], "--cvt-iterations"), (["remesh", "--help"], "--field"),
+                   (["field", "--help"], "rosy_x"), (["compare", "--help"], "V6%"), (["--help"], "compare"),
+                   (["metrics", "--help"], "--ref"),
                    (["--version"], "fcvt ")]:
     code, stdout, stderr = run([fcvt] + args)
     check(code == 0 and text in stdout and stderr == "", f"'{' '.join(args)}': exit {code}, stdout {stdout[:60]!r}")

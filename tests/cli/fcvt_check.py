@@ -79,6 +79,70 @@ def read_ply(path):
     return vertices, faces
 
 
+def read_ply_vertex_properties(path):
+    """Reads the binary little-endian PLY that fcvt writes; returns (property names, one tuple of
+    values per vertex, faces)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").splitlines()
+    assert header[1] == "format binary_little_endian 1.0", header[1]
+    names, vertex_format, element, nv, nf = [], "<", None, 0, 0
+    for line in header:
+        words = line.split()
+        if words[0] == "element":
+            element = words[1]
+            nv = int(words[2]) if element == "vertex" else nv
+            nf = int(words[2]) if element == "face" else nf
+        elif words[0] == "property" and element == "vertex":
+            vertex_format += {"double": "d", "float": "f"}[words[1]]
+            names.append(words[2])
+    size = struct.calcsize(vertex_format)
+    rows = [struct.unpack_from(vertex_format, data, end + i * size) for i in range(nv)]
+    offset = end + nv * size
+    faces = []
+    for _ in range(nf):
+        count, a, b, c = struct.unpack_from("<Biii", data, offset)
+        assert count == 3
+        faces.append((a, b, c))
+        offset += 13
+    return names, rows, faces
+
+
+FIELD_PROPERTIES = ["nx", "ny", "nz", "rosy_x", "rosy_y", "rosy_z"]
+
+
+def check_field_properties(path, label, tolerance=1e-6):
+    """The PLY at `path` has x y z and the six field properties; normals and directions are unit
+    and orthogonal (to `tolerance`). Returns (rows by name, faces)."""
+    names, rows, faces = read_ply_vertex_properties(path)
+    if not check(names[:3] == ["x", "y", "z"] and all(n in names for n in FIELD_PROPERTIES),
+                 f"{label}: vertex properties {names}, expected x y z + {' '.join(FIELD_PROPERTIES)}"):
+        return None, faces
+    index = {n: names.index(n) for n in names}
+    bad_normal = bad_direction = bad_dot = 0
+    worst = 0.0
+    for r in rows:
+        n = tuple(r[index[k]] for k in ("nx", "ny", "nz"))
+        d = tuple(r[index[k]] for k in ("rosy_x", "rosy_y", "rosy_z"))
+        errors = (abs(_norm(n) - 1), abs(_norm(d) - 1), abs(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]))
+        worst = max(worst, *errors)
+        bad_normal += errors[0] > tolerance
+        bad_direction += errors[1] > tolerance
+        bad_dot += errors[2] > tolerance
+    check(bad_normal == 0, f"{label}: {bad_normal} of {len(rows)} normals not unit (worst error {worst:.2e})")
+    check(bad_direction == 0, f"{label}: {bad_direction} of {len(rows)} directions not unit (worst error {worst:.2e})")
+    check(bad_dot == 0, f"{label}: {bad_dot} of {len(rows)} directions not orthogonal to the normal (worst {worst:.2e})")
+    return [{n: r[index[n]] for n in names} for r in rows], faces
+
+
+def euler_characteristic(faces):
+    """V - E + F over the referenced vertices."""
+    edges = {tuple(sorted((f[k], f[(k + 1) % 3]))) for f in faces for k in range(3)}
+    vertices = {v for f in faces for v in f}
+    return len(vertices) - len(edges) + len(faces)
+
+
 def _sub(p, q):
     return (p[0] - q[0], p[1] - q[1], p[2] - q[2])
 

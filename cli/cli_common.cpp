@@ -1,0 +1,59 @@
+#include "cli_common.h"
+
+#include "errors.h"
+#include "mesh_format.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+namespace fieldcvt::cli {
+
+FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser)
+{
+    const auto name = a.text("field");
+    if (!name) return fallback;
+    const std::string valid = allowUser ? "extrinsic, curvature-max, curvature-min or user"
+                                        : "extrinsic, curvature-max or curvature-min";
+    FieldSource source;
+    try {
+        source = fieldSourceFromName(*name);
+    } catch (const InvalidInputError&) {
+        throw UsageError("--field must be " + valid + ", got '" + *name + "'");
+    }
+    if (source == FieldSource::User && !allowUser) throw UsageError("--field must be " + valid + ", got '" + *name + "'");
+    return source;
+}
+
+void checkOutputPath(const std::string& path)
+{
+    checkMeshExtension(path);
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+        throw IOError(path + ": cannot write: directory " + parent.string() + " does not exist");
+}
+
+bool isPlyPath(const std::string& path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".ply";
+}
+
+const std::vector<Vec3>& userField(const std::string& path, const VertexAttributes& attributes)
+{
+    if (attributes.rosy.empty())
+        throw IOError(path + ": no rosy_x rosy_y rosy_z vertex properties (--field user takes the field from them)");
+    for (std::size_t v = 0; v < attributes.rosy.size(); ++v)
+        if (!attributes.rosy[v].allFinite())
+            throw IOError(path + ": vertex " + std::to_string(v) + " has a non-finite rosy_x rosy_y rosy_z vector");
+    return attributes.rosy;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace fieldcvt::cli

@@ -1,0 +1,33 @@
+#pragma once
+// Pieces shared by the fcvt subcommands: option translation to core types, output path checks,
+// the user field from a PLY file, timing.
+#include "arguments.h"
+
+#include "field.h"
+#include "mesh.h"
+#include "mesh_io.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace fieldcvt::cli {
+
+//! `--field NAME` as a FieldSource (fieldcvt::fieldSourceFromName); `fallback` when absent. An
+//! unknown name, or "user" when `allowUser` is false, is a UsageError listing the valid names.
+FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser);
+
+//! What would make the final write fail, found before the long part rather than after it: the
+//! extension and the directory (IOError, exit 1).
+void checkOutputPath(const std::string& path);
+
+//! True when the path ends in .ply (any case).
+bool isPlyPath(const std::string& path);
+
+//! The `rosy_x rosy_y rosy_z` vectors read with `path`, checked: present for every vertex and
+//! finite (IOError naming the file otherwise, saying that --field user needs them).
+const std::vector<Vec3>& userField(const std::string& path, const VertexAttributes& attributes);
+
+double secondsSince(std::chrono::steady_clock::time_point start);
+
+}  // namespace fieldcvt::cli

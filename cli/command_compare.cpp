@@ -1,0 +1,171 @@
+// `fcvt compare IN --vertices N`: CVT and FCVT on the same input with the same seed, one row
+// per method in the layout of the paper's Table 2.
+#include "arguments.h"
+#include "cli_common.h"
+#include "commands.h"
+#include "progress_printer.h"
+#include "report.h"
+
+#include "errors.h"
+#include "mesh_io.h"
+#include "remesh.h"
+
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace fieldcvt::cli {
+
+namespace {
+
+//! The pure CVT of the comparison (paper §5: 130 L-BFGS iterations, no field term).
+RemeshParams cvtParams(RemeshParams p)
+{
+    p.lambda = 0;
+    p.cvtIterations = 130;
+    p.fcvtIterations = 0;
+    return p;
+}
+
+void printUsage()
+{
+    const RemeshParams fcvt;
+    const RemeshParams cvt = cvtParams(fcvt);
+    std::printf(
+        "Usage: fcvt compare IN --vertices N [--seed S] [--lambda L] [--field F] [--threads T] [--json] [--quiet]\n"
+        "\n"
+        "Remeshes IN twice with the same seed and prints one row per method in the layout of the\n"
+        "paper's Table 2:\n"
+        "  CVT   lambda = %g, %d CVT iterations, %d FCVT iterations\n"
+        "  FCVT  lambda = %g (or --lambda), %d CVT iterations, then %d FCVT iterations\n"
+        "Columns: |X| vertices, |t| triangles, Q_min, Q_avg, theta_min, mean theta_min, theta_max\n"
+        "(degrees), %%<30 and %%>90 (%% of triangles with an angle below 30 / above 90 degrees), V6%%\n"
+        "(interior vertices of valence 6), d_RMS (x 1e-3) and d_H (x 1e-2) (fractions of IN's\n"
+        "bounding-box diagonal), seconds (the remeshing, without measuring the metrics).\n"
+        "\n"
+        "Options:\n"
+        "  --vertices N   target vertex count, >= 4 (required)\n"
+        "  --seed S       seed of the sampling and the field, >= 0 (default %llu)\n"
+        "  --lambda L     the FCVT row's weight of the field term, >= 0 (default %g)\n"
+        "  --field F      the FCVT row's field: extrinsic, curvature-max, curvature-min or user\n"
+        "                 (default %s)\n"
+        "  --threads T    OpenMP threads, >= 0 (default %d: all cores)\n"
+        "  --json         print the rows as a JSON array (metrics keys of 'fcvt metrics --json';\n"
+        "                 d_rms and d_h unscaled)\n"
+        "  --quiet        no progress output\n"
+        "  -h, --help     show this help\n",
+        cvt.lambda, cvt.cvtIterations, cvt.fcvtIterations, fcvt.lambda, fcvt.cvtIterations, fcvt.fcvtIterations,
+        static_cast<unsigned long long>(fcvt.seed), fcvt.lambda, fieldSourceName(fcvt.fieldSource).c_str(),
+        fcvt.threads);
+}
+
+struct Row {
+    std::string method;
+    RemeshParams params;
+    RemeshResult result;
+    double seconds = 0;
+};
+
+//! The run's time without the metrics stage (distances on dense samples are not remeshing).
+double remeshSeconds(const RemeshResult& r)
+{
+    double seconds = r.totalSeconds;
+    for (const StageTime& s : r.stageTimes)
+        if (s.stage == "metrics") seconds -= s.seconds;
+    return seconds;
+}
+
+void printTable(const std::vector<Row>& rows)
+{
+    std::printf("%-6s %7s %7s %6s %6s %6s %6s %6s %6s %6s %6s %11s %9s %8s\n", "method", "|X|", "|t|", "Q_min",
+                "Q_avg", "th_min", "th_avg", "th_max", "%<30", "%>90", "V6%", "d_RMS(1e-3)", "d_H(1e-2)", "seconds");
+    for (const Row& row : rows) {
+        const QualityMetrics& m = row.result.metrics;
+        std::printf("%-6s %7d %7d %6.3f %6.3f %6.2f %6.2f %6.2f %6.2f %6.2f %6.2f %11.3f %9.3f %8.2f\n",
+                    row.method.c_str(), row.result.mesh.vertexCount(), row.result.mesh.faceCount(), m.qMin, m.qAvg,
+                    m.thetaMin, m.thetaMinAvg, m.thetaMax, m.pctLt30, m.pctGt90, m.v6Pct, m.dRms * 1e3, m.dH * 1e2,
+                    row.seconds);
+    }
+}
+
+nlohmann::ordered_json rowsJson(const std::vector<Row>& rows)
+{
+    nlohmann::ordered_json j = nlohmann::ordered_json::array();
+    for (const Row& row : rows) {
+        nlohmann::ordered_json r = {{"method", row.method},
+                                    {"vertices", row.result.mesh.vertexCount()},
+                                    {"faces", row.result.mesh.faceCount()}};
+        const nlohmann::ordered_json metrics = metricsJson(row.result.metrics);
+        for (auto it = metrics.cbegin(); it != metrics.cend(); ++it) r[it.key()] = *it;
+        r["seconds"] = row.seconds;
+        r["evaluations"] = row.result.evaluations;
+        r["field"] = fieldSourceName(row.params.fieldSource);
+        r["lambda"] = row.params.lambda;
+        r["cvt_iterations"] = row.params.cvtIterations;
+        r["fcvt_iterations"] = row.params.fcvtIterations;
+        r["seed"] = row.params.seed;
+        r["warnings"] = row.result.warnings;
+        j.push_back(r);
+    }
+    return j;
+}
+
+}  // namespace
+
+int runCompare(const std::vector<std::string>& args)
+{
+    const Arguments a(args, {"vertices", "seed", "lambda", "field", "threads"}, {"json", "quiet", "help"});
+    if (a.flag("help")) {
+        printUsage();
+        return 0;
+    }
+    if (a.positional().size() != 1)
+        throw UsageError("compare needs exactly one input file, got " + std::to_string(a.positional().size()) +
+                         " (try 'fcvt compare --help')");
+    if (!a.has("vertices")) throw UsageError("compare needs --vertices N (the target vertex count)");
+    const std::string& inPath = a.positional()[0];
+    RemeshParams fcvt;
+    fcvt.vertexCount = static_cast<int>(a.integer("vertices", fcvt.vertexCount, 4, INT_MAX));
+    fcvt.seed = a.unsignedInteger("seed", fcvt.seed);
+    fcvt.lambda = a.number("lambda", fcvt.lambda, 0.0);
+    fcvt.fieldSource = fieldOption(a, fcvt.fieldSource, true);
+    fcvt.threads = static_cast<int>(a.integer("threads", fcvt.threads, 0, 4096));
+    if (fcvt.fieldSource == FieldSource::User && !isPlyPath(inPath))
+        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
+                         inPath + " is not a .ply file");
+    const bool quiet = a.flag("quiet");
+
+    MeshReadInfo readInfo;
+    VertexAttributes attributes;
+    const TriMesh input = readMesh(inPath, &readInfo, &attributes);
+    if (fcvt.fieldSource == FieldSource::User) fcvt.userDirections = userField(inPath, attributes);
+
+    std::vector<Row> rows = {{"CVT", cvtParams(fcvt), {}, 0}, {"FCVT", fcvt, {}, 0}};
+    {
+        ProgressPrinter printer(quiet);
+        const Progress inner = printer.callback();
+        for (Row& row : rows) {
+            Progress progress;
+            if (inner) progress = [&](const std::string& stage, double percent) { return inner(row.method + " " + stage, percent); };
+            try {
+                row.result = remesh(input, row.params, progress);
+            } catch (const InvalidInputError& e) {
+                throw InvalidInputError(inPath + ": " + e.what());
+            }
+            row.seconds = remeshSeconds(row.result);
+        }
+    }
+
+    if (!quiet) {
+        for (const std::string& note : readInfo.notes) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
+        for (const Row& row : rows)
+            for (const std::string& w : row.result.warnings)
+                std::fprintf(stderr, "fcvt: warning: %s: %s\n", row.method.c_str(), w.c_str());
+    }
+    if (a.flag("json")) std::printf("%s\n", rowsJson(rows).dump(2).c_str());
+    else printTable(rows);
+    return 0;
+}
+
+}  // namespace fieldcvt::cli

@@ -1,0 +1,123 @@
+// `fcvt field IN OUT.ply [--field F] [--seed S]`: the 6-RoSy field of a mesh, written as PLY
+// vertex properties, with its singularities (index sum = 6 chi on a closed surface).
+#include "arguments.h"
+#include "cli_common.h"
+#include "commands.h"
+
+#include "errors.h"
+#include "field.h"
+#include "mesh_check.h"
+#include "mesh_io.h"
+#include "metrics.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+namespace fieldcvt::cli {
+
+namespace {
+
+void printUsage()
+{
+    const FieldParams defaults;
+    std::printf(
+        "Usage: fcvt field IN OUT.ply [--field F] [--seed S] [--quiet]\n"
+        "\n"
+        "Computes the 6-RoSy direction field of the triangle mesh IN (cleaned as 'fcvt remesh'\n"
+        "does: unreferenced vertices, degenerate and duplicate faces removed) and writes it to\n"
+        "OUT.ply with the per-vertex properties nx ny nz (unit normal) and rosy_x rosy_y rosy_z\n"
+        "(unit representative direction; the six field directions are it turned by k * 60 deg).\n"
+        "Prints the singularity count, the sum of their indices (in sixths of a turn) and the\n"
+        "Euler characteristic chi = V - E + F: on a closed surface the index sum is 6 * chi.\n"
+        "\n"
+        "Options:\n"
+        "  --field F     extrinsic (smooth, Instant Meshes), curvature-max, curvature-min, or user\n"
+        "                (IN's PLY properties rosy_x rosy_y rosy_z, projected) (default %s)\n"
+        "  --seed S      seed of the random initial directions, >= 0 (default %llu)\n"
+        "  --quiet       print nothing but errors\n"
+        "  -h, --help    show this help\n",
+        fieldSourceName(defaults.source).c_str(), static_cast<unsigned long long>(defaults.seed));
+}
+
+}  // namespace
+
+int runField(const std::vector<std::string>& args)
+{
+    const Arguments a(args, {"field", "seed"}, {"quiet", "help"});
+    if (a.flag("help")) {
+        printUsage();
+        return 0;
+    }
+    if (a.positional().size() != 2)
+        throw UsageError("field needs an input and an output file, got " + std::to_string(a.positional().size()) +
+                         " file arguments (try 'fcvt field --help')");
+    const std::string& inPath = a.positional()[0];
+    const std::string& outPath = a.positional()[1];
+    FieldParams params;
+    params.source = fieldOption(a, params.source, true);
+    params.seed = a.unsignedInteger("seed", params.seed);
+    const bool quiet = a.flag("quiet");
+    if (!isPlyPath(outPath))
+        throw UsageError("field writes a .ply file (the only format with the field's vertex properties), got '" + outPath + "'");
+    if (params.source == FieldSource::User && !isPlyPath(inPath))
+        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
+                         inPath + " is not a .ply file");
+    checkOutputPath(outPath);
+
+    const auto start = std::chrono::steady_clock::now();
+    MeshReadInfo readInfo;
+    VertexAttributes inputAttributes;
+    const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
+    std::vector<std::string> warnings;
+    for (const std::string& note : readInfo.notes) warnings.push_back(inPath + ": " + note);
+
+    InputReport cleaning;
+    TriMesh mesh;
+    DirectionField field;
+    try {
+        mesh = prepareInput(input, cleaning);
+        if (params.source == FieldSource::User) {
+            const std::vector<Vec3>& vectors = userField(inPath, inputAttributes);
+            std::vector<Vec3> clean(mesh.vertices.size(), Vec3::Zero());
+            for (std::size_t v = 0; v < vectors.size() && v < cleaning.cleanIndex.size(); ++v)
+                if (cleaning.cleanIndex[v] >= 0) clean[cleaning.cleanIndex[v]] = vectors[v];
+            field = fieldFromVectors(mesh, clean, params.seed);
+        } else {
+            field = computeField(mesh, params);
+        }
+    } catch (const InvalidInputError& e) {
+        throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
+    }
+    for (const std::string& note : cleaning.notes) warnings.push_back(inPath + ": " + note);
+
+    const std::vector<Singularity> singularities = findSingularities(mesh, field);
+    VertexAttributes attributes;
+    attributes.normals = field.normals;
+    attributes.rosy = field.directions;
+    writeMesh(outPath, mesh, &attributes);
+
+    if (!quiet) {
+        for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", w.c_str());
+        long long indexSum = 0;
+        int positive = 0, negative = 0;
+        for (const Singularity& s : singularities) {
+            indexSum += s.index;
+            (s.index > 0 ? positive : negative) += 1;
+        }
+        const TopologySummary t = computeTopology(mesh);
+        const long long chi = static_cast<long long>(t.vertices) - t.edges + t.faces;
+        std::printf("%s: %d vertices, %d faces, field %s (seed %llu), %.2f s\n", outPath.c_str(), mesh.vertexCount(),
+                    mesh.faceCount(), fieldSourceName(params.source).c_str(),
+                    static_cast<unsigned long long>(params.seed), secondsSince(start));
+        std::printf("singularities: %zu\n", singularities.size());
+        std::printf("positive: %d, negative: %d\n", positive, negative);
+        std::printf("index sum: %lld\n", indexSum);
+        std::printf("euler characteristic: %lld\n", chi);
+        std::printf("6 chi: %lld (genus %d, %d boundary loops; the index sum equals 6 chi on a closed surface)\n",
+                    6 * chi, t.genus, t.boundaryLoops);
+    }
+    return 0;
+}
+
+}  // namespace fieldcvt::cli
