@@ -34,11 +34,33 @@ struct FieldParams {
     //! Edges whose dihedral angle exceeds this (degrees) constrain the field to their tangent,
     //! like boundary edges; <= 0 disables crease constraints.
     double sharpAngle = 60.0;
+    //! Border edges constrain the field to their tangent (extrinsic source). Turn off where the
+    //! border and the smooth field disagree, e.g. an open cylinder (rim tangent ⟂ axis, which no
+    //! 6-RoSy representative of an axis-aligned field is) or a square (edges 90° apart).
+    bool alignToBorder = true;
 };
 
 //! Computes the field at every vertex of `mesh` (which must be a clean triangle mesh: see
 //! mesh_check.h). Deterministic for a given seed and independent of the thread count.
 DirectionField computeField(const TriMesh& mesh, const FieldParams& params);
+
+//! What one computeField run did (for tests, benchmarks and reports).
+struct FieldReport {
+    std::vector<int> levelVertexCounts;  //!< vertices per hierarchy level, finest (the input) first
+    //! Extrinsic energy (extrinsicEnergy) of the field on the input mesh: [0] the random initial
+    //! field, then after smoothing each level, coarsest first, prolongated to the input mesh.
+    std::vector<double> levelEnergies;
+    //! Per level, coarsest first: that level's weighted energy before smoothing, then after each
+    //! Gauss–Seidel sweep (non-increasing).
+    std::vector<std::vector<double>> sweepEnergies;
+    int constrainedVertices = 0;  //!< input vertices whose direction was prescribed
+    //! Curvature sources: vertices where curvature was (nearly) umbilic or flat and the direction
+    //! comes from smoothing with the reliable ones fixed.
+    int umbilicVertices = 0;
+};
+
+//! As above, and fills `report` (the energy traces cost extra time; pass nullptr to skip).
+DirectionField computeField(const TriMesh& mesh, const FieldParams& params, FieldReport* report);
 
 //! Builds a field from user vectors per vertex: each is projected on the tangent plane of the
 //! vertex normal and normalised. Throws InvalidInputError on a size mismatch; a vector

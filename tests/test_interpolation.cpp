@@ -1,0 +1,148 @@
+// Interpolation of the 6-RoSy field (paper §4.2).
+#include "field.h"
+#include "interpolation.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace fieldcvt;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Distance between the six-direction sets of (a, n) and (b, n): min over b's rotations.
+double setDistance(const Vec3& a, const Vec3& b, const Vec3& n)
+{
+    double best = 1e300;
+    for (int k = 0; k < 6; ++k) best = std::min(best, (a - rotateRepresentative(b, n, k)).norm());
+    return best;
+}
+
+// A curved mesh with a field whose normals differ between the corners of every face, which is
+// where the choice of representatives matters.
+DirectionField sphereField(const TriMesh& m, std::uint64_t seed)
+{
+    FieldParams params;
+    params.seed = seed;
+    params.smoothingIterations = 2;  // rough on purpose: large angles between neighbours
+    return computeField(m, params);
+}
+
+}  // namespace
+
+TEST(Interpolation, RotateRepresentative)
+{
+    const Vec3 n = Vec3(1, 2, 3).normalized();
+    const Vec3 d = n.cross(Vec3(0, 0, 1)).normalized();
+    for (int k = -7; k <= 7; ++k) {
+        const Vec3 r = rotateRepresentative(d, n, k);
+        EXPECT_NEAR(r.norm(), 1.0, 1e-14);
+        EXPECT_NEAR(r.dot(n), 0.0, 1e-14);
+        const double expected = std::cos(k * kPi / 3);
+        EXPECT_NEAR(r.dot(d), expected, 1e-14) << k;
+        // Counter-clockwise about n: sin of the angle along n × d.
+        EXPECT_NEAR(r.dot(n.cross(d)), std::sin(k * kPi / 3), 1e-14) << k;
+        EXPECT_LT((r - rotateRepresentative(d, n, k + 6)).norm(), 1e-14);
+    }
+    EXPECT_EQ(rotateRepresentative(d, n, 0), d);
+}
+
+TEST(Interpolation, InvariantToStoredRepresentative)
+{
+    const TriMesh m = testmesh::icosphere(2);
+    const DirectionField field = sphereField(m, 7);
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0);  // test inputs only
+    int checked = 0;
+    for (int f = 0; f < m.faceCount(); f += 7) {
+        double a = u(rng), b = u(rng);
+        if (a + b > 1) a = 1 - a, b = 1 - b;
+        const Vec3 bary(a, b, 1 - a - b);
+        const FieldSample ref = interpolateField(m, field, f, bary);
+        for (int corner = 0; corner < 3; ++corner)
+            for (int k = 1; k < 6; ++k) {
+                DirectionField rotated = field;
+                const int v = m.faces[f][corner];
+                rotated.directions[v] = rotateRepresentative(field.directions[v], field.normals[v], k);
+                const FieldSample s = interpolateField(m, rotated, f, bary);
+                EXPECT_LT((s.normal - ref.normal).norm(), 1e-12);
+                EXPECT_LT(setDistance(s.direction, ref.direction, ref.normal), 1e-12)
+                    << "face " << f << " corner " << corner << " k " << k;
+                ++checked;
+            }
+    }
+    EXPECT_GT(checked, 400);
+}
+
+TEST(Interpolation, ResultIsUnitAndTangent)
+{
+    const TriMesh m = testmesh::icosphere(2);
+    const DirectionField field = sphereField(m, 11);
+    for (int f = 0; f < m.faceCount(); ++f) {
+        const FieldSample s = interpolateField(m, field, f, Vec3(0.2, 0.3, 0.5));
+        EXPECT_NEAR(s.normal.norm(), 1.0, 1e-12);
+        EXPECT_NEAR(s.direction.norm(), 1.0, 1e-12);
+        EXPECT_NEAR(s.direction.dot(s.normal), 0.0, 1e-12);
+    }
+}
+
+TEST(Interpolation, ConstantFieldOnPlaneIsReproduced)
+{
+    const TriMesh m = testmesh::planeGrid(6);
+    const Vec3 n(0, 0, 1), d = Vec3(std::cos(0.3), std::sin(0.3), 0);
+    DirectionField field;
+    for (int v = 0; v < m.vertexCount(); ++v) {
+        field.normals.push_back(n);
+        field.directions.push_back(rotateRepresentative(d, n, (v * 5) % 6));  // mixed representatives
+    }
+    for (int f = 0; f < m.faceCount(); ++f)
+        for (const Vec3& bary : {Vec3(1.0 / 3, 1.0 / 3, 1.0 / 3), Vec3(0.7, 0.2, 0.1), Vec3(0.05, 0.05, 0.9)}) {
+            const FieldSample s = interpolateField(m, field, f, bary);
+            EXPECT_LT((s.normal - n).norm(), 1e-14);
+            EXPECT_LT(setDistance(s.direction, d, n), 1e-12);
+        }
+}
+
+TEST(Interpolation, CornerGivesTheVertexField)
+{
+    const TriMesh m = testmesh::icosphere(2);
+    const DirectionField field = sphereField(m, 5);
+    for (int f = 0; f < m.faceCount(); f += 3)
+        for (int corner = 0; corner < 3; ++corner) {
+            Vec3 bary = Vec3::Zero();
+            bary[corner] = 1;
+            const int v = m.faces[f][corner];
+            const FieldSample s = interpolateField(m, field, f, bary);
+            EXPECT_LT((s.normal - field.normals[v]).norm(), 1e-14);
+            EXPECT_LT(setDistance(s.direction, field.directions[v], field.normals[v]), 1e-12);
+        }
+}
+
+TEST(Interpolation, ContinuousAcrossEdges)
+{
+    // A point on an edge depends only on the edge's two vertices: both faces agree.
+    const TriMesh m = testmesh::icosphere(2);
+    const DirectionField field = sphereField(m, 9);
+    int checked = 0;
+    for (int f = 0; f < m.faceCount(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int a = m.faces[f][k], b = m.faces[f][(k + 1) % 3];
+            for (int g = f + 1; g < m.faceCount(); ++g)
+                for (int l = 0; l < 3; ++l)
+                    if (m.faces[g][l] == b && m.faces[g][(l + 1) % 3] == a) {
+                        Vec3 bf = Vec3::Zero(), bg = Vec3::Zero();
+                        bf[k] = 0.3, bf[(k + 1) % 3] = 0.7;
+                        bg[(l + 1) % 3] = 0.3, bg[l] = 0.7;
+                        const FieldSample sf = interpolateField(m, field, f, bf);
+                        const FieldSample sg = interpolateField(m, field, g, bg);
+                        EXPECT_LT((sf.normal - sg.normal).norm(), 1e-12);
+                        EXPECT_LT(setDistance(sf.direction, sg.direction, sf.normal), 1e-12);
+                        ++checked;
+                    }
+        }
+    EXPECT_EQ(checked, m.faceCount() * 3 / 2);
+}
