@@ -1,11 +1,17 @@
 #include "filter_fcvt.h"
 
+#include <vcg/complex/allocate.h>
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "errors.h"
+#include "field_drawing.h"
+#include "mesh_check.h"
 #include "mesh_convert.h"
 
 namespace {
@@ -21,6 +27,67 @@ int defaultVertexCount(const MeshModel* m)
     return std::max(kMinVertices, std::min(vn, kDefaultMaxVertices));
 }
 
+// The fieldSource enum: index in the RichEnum (the value stored in .mlx scripts, frozen) ->
+// core source. "Compute 6-RoSy Field" offers the first kComputedFieldSources entries.
+struct FieldSourceChoice {
+    fieldcvt::FieldSource source;
+    const char* label;
+};
+constexpr FieldSourceChoice kFieldSources[] = {
+    {fieldcvt::FieldSource::Extrinsic, "extrinsic 6-RoSy"},
+    {fieldcvt::FieldSource::CurvatureMax, "max curvature"},
+    {fieldcvt::FieldSource::CurvatureMin, "min curvature"},
+    {fieldcvt::FieldSource::User, "per-vertex attribute rosy"},
+};
+constexpr int kAllFieldSources = int(std::size(kFieldSources));
+constexpr int kComputedFieldSources = 3;
+
+QStringList fieldSourceLabels(int count)
+{
+    QStringList labels;
+    for (int i = 0; i < count; ++i)
+        labels << kFieldSources[i].label;
+    return labels;
+}
+
+int fieldSourceIndex(fieldcvt::FieldSource source)
+{
+    for (int i = 0; i < kAllFieldSources; ++i)
+        if (kFieldSources[i].source == source)
+            return i;
+    return 0;
+}
+
+fieldcvt::Vec3 toVec3(const Point3m& p)
+{
+    return fieldcvt::Vec3(double(p[0]), double(p[1]), double(p[2]));
+}
+
+Point3m toPoint3m(const fieldcvt::Vec3& v)
+{
+    return Point3m(Scalarm(v.x()), Scalarm(v.y()), Scalarm(v.z()));
+}
+
+// A handle to the per-vertex Point3m attribute `name`, created if missing; an attribute of that
+// name but another type is replaced (vcg asserts on adding a name that exists).
+CMeshO::PerVertexAttributeHandle<Point3m> pointAttribute(CMeshO& cm, const char* name)
+{
+    auto h = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<Point3m>(cm, name);
+    if (vcg::tri::Allocator<CMeshO>::IsValidHandle<Point3m>(cm, h))
+        return h;
+    vcg::tri::Allocator<CMeshO>::DeletePerVertexAttribute(cm, name);
+    return vcg::tri::Allocator<CMeshO>::AddPerVertexAttribute<Point3m>(cm, name);
+}
+
+// Singularity count and index sum (in sixths of a turn; 6·χ on a closed surface).
+QString singularitySummary(const std::vector<fieldcvt::Singularity>& singularities)
+{
+    long long sum = 0;
+    for (const fieldcvt::Singularity& s : singularities)
+        sum += s.index;
+    return QString("%1 singularities (index sum %2/6)").arg(singularities.size()).arg(sum);
+}
+
 // Log text for a figure; NaN (distance not computed) shown as "n/a".
 QString num(double v, int precision = 4)
 {
@@ -31,7 +98,7 @@ QString num(double v, int precision = 4)
 
 FilterFcvtPlugin::FilterFcvtPlugin()
 {
-    typeList << FP_FCVT_REMESH;
+    typeList << FP_FCVT_REMESH << FP_FCVT_FIELD;
     for (FilterIDType tt : types())
         actionList << new QAction(filterName(tt), this);
 }
@@ -47,6 +114,8 @@ QString FilterFcvtPlugin::filterName(FilterIDType filter) const
     case FP_FCVT_REMESH:
         // Frozen: the key of .mlx scripts.
         return "Remeshing: Field-Aligned CVT (FCVT)";
+    case FP_FCVT_FIELD:
+        return "Compute 6-RoSy Field";
     default:
         return QString();
     }
@@ -63,7 +132,20 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "is kept. Quality metrics (Q_min, Q_avg, angles, V6%, d_RMS, d_H) and per-stage "
                "times are written to the log.<br>"
                "See: <b>\"Field-Aligned Isotropic Surface Remeshing\"</b>, Computer Graphics "
-               "Forum.";
+               "Forum.<br>"
+               "The field that the edges follow (fieldSource) is an extrinsically smooth 6-RoSy "
+               "field, a principal-curvature direction, or the per-vertex attribute <i>rosy</i> of "
+               "the input (e.g. from <i>Compute 6-RoSy Field</i>). The output layer carries the "
+               "field interpolated at its vertices as the per-vertex attribute <i>rosy</i>.";
+    case FP_FCVT_FIELD:
+        return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
+               "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
+               "boundaries and sharp edges, or the maximal / minimal principal-curvature "
+               "direction. Stores one representative direction per vertex as the per-vertex "
+               "attribute <i>rosy</i> (vertices dropped by the input check get (0,0,0)), logs the "
+               "number of singularities, and adds a layer \"6-RoSy field\" that draws the six "
+               "directions at each vertex (a uniform subset on meshes over 20000 vertices) as "
+               "line segments. The geometry of the current mesh is unchanged.";
     default:
         return QString();
     }
@@ -74,6 +156,8 @@ MeshFilterInterface::FilterClass FilterFcvtPlugin::getClass(QAction* a)
     switch (ID(a)) {
     case FP_FCVT_REMESH:
         return MeshFilterInterface::Remeshing;
+    case FP_FCVT_FIELD:
+        return MeshFilterInterface::Normal;
     default:
         return MeshFilterInterface::Generic;
     }
@@ -96,7 +180,8 @@ int FilterFcvtPlugin::getPreConditions(QAction*) const
 
 int FilterFcvtPlugin::postCondition(QAction*) const
 {
-    // The input layer is not modified; the result is a new layer.
+    // The input layer's geometry and standard data are not modified (the field filter only adds
+    // the custom attribute `rosy`); results are new layers.
     return MeshModel::MM_NONE;
 }
 
@@ -127,9 +212,25 @@ void FilterFcvtPlugin::addParameters(QAction* a, int vertexCountDefault, RichPar
         par.addParam(RichInt(kFcvtIterations, defaults.fcvtIterations, "FCVT iterations",
                              "L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
                              "iterations."));
+        par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.fieldSource),
+                              fieldSourceLabels(kAllFieldSources), "Field source",
+                              "The 6-RoSy field the edges are aligned to: the extrinsically smooth "
+                              "field, the max or min principal-curvature direction, or the "
+                              "per-vertex Point3 attribute 'rosy' of the input layer."));
         par.addParam(RichInt(kSeed, int(defaults.seed), "Random seed",
                              "Seed of the initial sampling (>= 0); the same seed gives the same "
                              "output."));
+        break;
+    }
+    case FP_FCVT_FIELD: {
+        const fieldcvt::FieldParams defaults;
+        par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.source),
+                              fieldSourceLabels(kComputedFieldSources), "Field source",
+                              "The extrinsically smooth 6-RoSy field (aligned to boundaries and "
+                              "sharp edges), or the max or min principal-curvature direction."));
+        par.addParam(RichInt(kSeed, int(defaults.seed), "Random seed",
+                             "Seed of the random initial directions of the smooth field (>= 0); "
+                             "the same seed gives the same field."));
         break;
     }
     default:
@@ -144,34 +245,10 @@ bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParam
     // nothing at all, so an exception would terminate the application.
     try {
         switch (ID(a)) {
-        case FP_FCVT_REMESH: {
-            const int vertexCount = par.getInt(kVertexCount);
-            const double lambda = par.getFloat(kLambda);
-            const int cvtIterations = par.getInt(kCvtIterations);
-            const int fcvtIterations = par.getInt(kFcvtIterations);
-            const int seed = par.getInt(kSeed);
-            if (vertexCount < kMinVertices)
-                return fail(QString("FCVT: vertexCount must be at least %1 (got %2)")
-                                .arg(kMinVertices)
-                                .arg(vertexCount));
-            if (!(lambda >= 0) || !std::isfinite(lambda))
-                return fail(QString("FCVT: lambda must be a finite number >= 0 (got %1)").arg(lambda));
-            if (cvtIterations < 0)
-                return fail(QString("FCVT: cvtIterations must be >= 0 (got %1)").arg(cvtIterations));
-            if (fcvtIterations < 0)
-                return fail(
-                    QString("FCVT: fcvtIterations must be >= 0 (got %1)").arg(fcvtIterations));
-            if (seed < 0)
-                return fail(QString("FCVT: seed must be >= 0 (got %1)").arg(seed));
-
-            fieldcvt::RemeshParams params;
-            params.vertexCount = vertexCount;
-            params.lambda = lambda;
-            params.cvtIterations = cvtIterations;
-            params.fcvtIterations = fcvtIterations;
-            params.seed = static_cast<std::uint64_t>(seed);
-            return remeshFcvt(md, params, cb);
-        }
+        case FP_FCVT_REMESH:
+            return applyRemesh(md, par, cb);
+        case FP_FCVT_FIELD:
+            return applyField(md, par, cb);
         default:
             return fail("FCVT: unknown filter");
         }
@@ -180,6 +257,61 @@ bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParam
     } catch (...) {
         return fail("FCVT: unknown error");
     }
+}
+
+bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& par,
+                                   vcg::CallBackPos* cb)
+{
+    const int vertexCount = par.getInt(kVertexCount);
+    const double lambda = par.getFloat(kLambda);
+    const int cvtIterations = par.getInt(kCvtIterations);
+    const int fcvtIterations = par.getInt(kFcvtIterations);
+    const int fieldSource = par.getEnum(kFieldSource);
+    const int seed = par.getInt(kSeed);
+    if (vertexCount < kMinVertices)
+        return fail(QString("FCVT: vertexCount must be at least %1 (got %2)")
+                        .arg(kMinVertices)
+                        .arg(vertexCount));
+    if (!(lambda >= 0) || !std::isfinite(lambda))
+        return fail(QString("FCVT: lambda must be a finite number >= 0 (got %1)").arg(lambda));
+    if (cvtIterations < 0)
+        return fail(QString("FCVT: cvtIterations must be >= 0 (got %1)").arg(cvtIterations));
+    if (fcvtIterations < 0)
+        return fail(QString("FCVT: fcvtIterations must be >= 0 (got %1)").arg(fcvtIterations));
+    // A script may carry any integer as the enum value: MeshLab does not check the range.
+    if (fieldSource < 0 || fieldSource >= kAllFieldSources)
+        return fail(QString("FCVT: fieldSource must be 0..%1 (got %2)")
+                        .arg(kAllFieldSources - 1)
+                        .arg(fieldSource));
+    if (seed < 0)
+        return fail(QString("FCVT: seed must be >= 0 (got %1)").arg(seed));
+
+    fieldcvt::RemeshParams params;
+    params.vertexCount = vertexCount;
+    params.lambda = lambda;
+    params.cvtIterations = cvtIterations;
+    params.fcvtIterations = fcvtIterations;
+    params.fieldSource = kFieldSources[fieldSource].source;
+    params.seed = static_cast<std::uint64_t>(seed);
+    return remeshFcvt(md, params, cb);
+}
+
+bool FilterFcvtPlugin::applyField(MeshDocument& md, const RichParameterList& par,
+                                  vcg::CallBackPos* cb)
+{
+    const int fieldSource = par.getEnum(kFieldSource);
+    const int seed = par.getInt(kSeed);
+    if (fieldSource < 0 || fieldSource >= kComputedFieldSources)
+        return fail(QString("FCVT: fieldSource must be 0..%1 (got %2)")
+                        .arg(kComputedFieldSources - 1)
+                        .arg(fieldSource));
+    if (seed < 0)
+        return fail(QString("FCVT: seed must be >= 0 (got %1)").arg(seed));
+
+    fieldcvt::FieldParams params;
+    params.source = kFieldSources[fieldSource].source;
+    params.seed = static_cast<std::uint64_t>(seed);
+    return computeRosyField(md, params, cb);
 }
 
 bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
@@ -192,7 +324,25 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
         return fail(QString("FCVT: layer '%1' has no faces; a triangle mesh is required")
                         .arg(input->label()));
 
-    const fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
+    fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
+    fieldcvt::RemeshParams run = params;
+    if (run.fieldSource == fieldcvt::FieldSource::User) {
+        // One vector per live vertex, in the order of toTriMesh.
+        // Not const: vcg's handle has no const operator[].
+        auto rosy =
+            vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<Point3m>(input->cm, kRosyAttribute);
+        if (!vcg::tri::Allocator<CMeshO>::IsValidHandle<Point3m>(input->cm, rosy))
+            return fail(QString("FCVT: fieldSource 'per-vertex attribute rosy' needs the per-vertex "
+                                "Point3 attribute '%1' on layer '%2', which has none (run 'Compute "
+                                "6-RoSy Field' on it first)")
+                            .arg(kRosyAttribute)
+                            .arg(input->label()));
+        run.userDirections.clear();
+        run.userDirections.reserve(in.vertices.size());
+        for (auto vi = input->cm.vert.begin(); vi != input->cm.vert.end(); ++vi)
+            if (!vi->IsD())
+                run.userDirections.push_back(toVec3(rosy[vi]));
+    }
 
     // MeshLab's callback takes an int percent; the 2020.09 callbacks never ask to stop, so the
     // core is never cancelled from here. Calls are throttled to changes of percent or stage.
@@ -211,7 +361,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
         return true;
     };
 
-    const fieldcvt::RemeshResult result = fieldcvt::remesh(in, params, progress);
+    const fieldcvt::RemeshResult result = fieldcvt::remesh(in, run, progress);
 
     // The new layer is created only once the core succeeded, so a failure leaves the document
     // as it was; a failure while filling it removes it again.
@@ -219,6 +369,16 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     MeshModel* output = md.addNewMesh("", layerName, true);
     try {
         fcvt_plugin::fromTriMesh(result.mesh, output->cm);
+        if (!result.outputDirections.empty()) {
+            if (result.outputDirections.size() != size_t(output->cm.vn))
+                throw fieldcvt::Error("the output field has " +
+                                      std::to_string(result.outputDirections.size()) +
+                                      " directions for " + std::to_string(output->cm.vn) +
+                                      " vertices");
+            auto rosy = pointAttribute(output->cm, kRosyAttribute);
+            for (size_t i = 0; i < result.outputDirections.size(); ++i)
+                rosy[i] = toPoint3m(result.outputDirections[i]);
+        }
         output->cm.Tr = input->cm.Tr;
         output->UpdateBoxAndNormals();
     } catch (...) {
@@ -229,6 +389,96 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     if (cb != nullptr)
         cb(100, "FCVT done");
     logReport(result, output->label());
+    if (result.outputDirections.empty())
+        Log("FCVT field: none (lambda = 0 or no FCVT iterations)");
+    else
+        Log(QString("FCVT field: %1, %2 of the input; stored at the output vertices as the "
+                    "per-vertex attribute '%3'")
+                .arg(kFieldSources[fieldSourceIndex(run.fieldSource)].label)
+                .arg(singularitySummary(result.singularities))
+                .arg(kRosyAttribute)
+                .toStdString());
+    return true;
+}
+
+bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
+                                        vcg::CallBackPos* cb)
+{
+    MeshModel* input = md.mm();
+    if (input == nullptr)
+        return fail("FCVT: no mesh loaded");
+    if (input->cm.fn == 0)
+        return fail(QString("FCVT: layer '%1' has no faces; a triangle mesh is required")
+                        .arg(input->label()));
+
+    if (cb != nullptr)
+        cb(0, "checking the input");
+    const fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
+    fieldcvt::InputReport report;
+    const fieldcvt::TriMesh clean = fieldcvt::prepareInput(in, report);
+    if (report.cleanIndex.size() != in.vertices.size())
+        throw fieldcvt::Error("the input check returned " + std::to_string(report.cleanIndex.size()) +
+                              " vertex indices for " + std::to_string(in.vertices.size()) +
+                              " vertices");
+    if (cb != nullptr)
+        cb(10, "computing the 6-RoSy field");
+    const fieldcvt::DirectionField field = fieldcvt::computeField(clean, params);
+    if (field.directions.size() != clean.vertices.size())
+        throw fieldcvt::Error("the field has " + std::to_string(field.directions.size()) +
+                              " directions for " + std::to_string(clean.vertices.size()) +
+                              " vertices");
+    if (cb != nullptr)
+        cb(80, "finding singularities");
+    const std::vector<fieldcvt::Singularity> singularities =
+        fieldcvt::findSingularities(clean, field);
+
+    // Everything is computed: now change the document. The drawing layer is removed again if
+    // filling it fails; the attribute is written last.
+    if (cb != nullptr)
+        cb(90, "drawing the field");
+    MeshModel* drawing = md.addNewMesh("", kFieldLayerLabel, false);
+    fcvt_plugin::FieldDrawingStats stats;
+    try {
+        stats = fcvt_plugin::drawField(clean, field, drawing->cm);
+        drawing->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_COLOR);
+        drawing->cm.Tr = input->cm.Tr;
+    } catch (...) {
+        md.delMesh(drawing);
+        md.setCurrentMesh(input->id());
+        throw;
+    }
+
+    auto rosy = pointAttribute(input->cm, kRosyAttribute);
+    size_t live = 0;
+    for (auto vi = input->cm.vert.begin(); vi != input->cm.vert.end(); ++vi) {
+        if (vi->IsD())
+            continue;
+        const int c = report.cleanIndex[live++];
+        rosy[vi] = c >= 0 ? toPoint3m(field.directions[size_t(c)]) : Point3m(0, 0, 0);
+    }
+    if (cb != nullptr)
+        cb(100, "6-RoSy field done");
+
+    for (const std::string& note : report.notes)
+        Log(GLLogStream::WARNING, "FCVT input: " + note);
+    Log(QString("FCVT field: %1 (seed %2) on layer '%3': %4; stored as the per-vertex attribute "
+                "'%5'")
+            .arg(kFieldSources[fieldSourceIndex(params.source)].label)
+            .arg(qulonglong(params.seed))
+            .arg(input->label())
+            .arg(singularitySummary(singularities))
+            .arg(kRosyAttribute)
+            .toStdString());
+    Log(QString("FCVT field: new layer '%1': %2 of %3 vertices drawn (every %4), %5 segments of "
+                "length %6 (mean edge %7)")
+            .arg(drawing->label())
+            .arg(stats.drawnVertices)
+            .arg(clean.vertexCount())
+            .arg(stats.stride)
+            .arg(3 * stats.drawnVertices)
+            .arg(num(stats.segmentLength))
+            .arg(num(stats.meanEdgeLength))
+            .toStdString());
     return true;
 }
 
@@ -277,6 +527,20 @@ void FilterFcvtPlugin::logReport(const fieldcvt::RemeshResult& r, const QString&
     Log(QString("FCVT topology: input %1; output %2")
             .arg(topology(r.inputTopology), topology(r.outputTopology))
             .toStdString());
+    // E_CVT and E_field at the end of each phase (the last record of each).
+    QString energies;
+    for (size_t i = 0; i < r.energyHistory.size(); ++i) {
+        const fieldcvt::EnergyRecord& e = r.energyHistory[i];
+        if (i + 1 < r.energyHistory.size() && r.energyHistory[i + 1].phase == e.phase)
+            continue;
+        energies += QString("%1%2 E_CVT %3, E_field %4")
+                        .arg(energies.isEmpty() ? "" : "; ")
+                        .arg(QString::fromStdString(e.phase))
+                        .arg(num(e.cvt, 6))
+                        .arg(num(e.field, 6));
+    }
+    if (!energies.isEmpty())
+        Log(("FCVT energy at the end of each phase: " + energies).toStdString());
     for (const std::string& w : r.warnings)
         Log(GLLogStream::WARNING, "FCVT warning: " + w);
 }

@@ -1,8 +1,10 @@
 #pragma once
-// MeshLab 2020.09 filter plugin for FCVT remeshing. A thin adapter: it reads the parameters,
-// converts CMeshO <-> fieldcvt::TriMesh, calls fieldcvt::remesh and reports; no algorithm lives here.
+// MeshLab 2020.09 filter plugin for FCVT remeshing and its 6-RoSy field. A thin adapter: it reads
+// the parameters, converts CMeshO <-> fieldcvt::TriMesh, calls the core (fieldcvt::remesh,
+// fieldcvt::computeField) and reports; no algorithm lives here.
 #include <common/interfaces.h>
 
+#include "field.h"
 #include "remesh.h"
 
 class FilterFcvtPlugin : public QObject, public MeshFilterInterface {
@@ -11,7 +13,7 @@ class FilterFcvtPlugin : public QObject, public MeshFilterInterface {
     Q_INTERFACES(MeshFilterInterface)
 
 public:
-    enum { FP_FCVT_REMESH };
+    enum { FP_FCVT_REMESH, FP_FCVT_FIELD };
 
     FilterFcvtPlugin();
 
@@ -35,12 +37,22 @@ public:
     static constexpr const char* kLambda = "lambda";
     static constexpr const char* kCvtIterations = "cvtIterations";
     static constexpr const char* kFcvtIterations = "fcvtIterations";
+    static constexpr const char* kFieldSource = "fieldSource";
     static constexpr const char* kSeed = "seed";
+    //! Name of the per-vertex Point3m attribute that holds a 6-RoSy field (representative d).
+    static constexpr const char* kRosyAttribute = "rosy";
+    //! Label of the layer "Compute 6-RoSy Field" adds (MeshLab appends "(1)", ... if taken).
+    static constexpr const char* kFieldLayerLabel = "6-RoSy field";
 
 private:
-    //! The typed body of "Remeshing: Field-Aligned CVT (FCVT)".
     void addParameters(QAction* a, int vertexCountDefault, RichParameterList& par);
+    //! Parameters -> typed arguments, then the typed body of each filter.
+    bool applyRemesh(MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
+    bool applyField(MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
+    //! The typed body of "Remeshing: Field-Aligned CVT (FCVT)".
     bool remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params, vcg::CallBackPos* cb);
+    //! The typed body of "Compute 6-RoSy Field".
+    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, vcg::CallBackPos* cb);
     //! Fails the filter: sets errorMessage and also logs it, because meshlabserver 2020.09 prints
     //! the filter log but never errorMsg().
     bool fail(const QString& message);

@@ -27,5 +27,15 @@ add_test(NAME meshlab_remesh_torus
 add_test(NAME meshlab_invalid_parameter
   COMMAND bash "${_fcvt_ml_dir}/invalid_parameter.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/invalid_parameter")
+add_test(NAME meshlab_field_torus
+  COMMAND bash "${_fcvt_ml_dir}/field_torus.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/field_torus")
+add_test(NAME meshlab_missing_rosy
+  COMMAND bash "${_fcvt_ml_dir}/missing_rosy.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/missing_rosy")
+add_test(NAME meshlab_field_then_remesh
+  COMMAND bash "${_fcvt_ml_dir}/field_then_remesh.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/field_then_remesh")
 set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_parameter
+  meshlab_field_torus meshlab_missing_rosy meshlab_field_then_remesh
   PROPERTIES LABELS meshlab TIMEOUT 600)

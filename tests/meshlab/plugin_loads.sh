@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The staged meshlabserver loads libfilter_fcvt.so, and resources/fcvt-remesh.mlx lists as many
-# parameters as the filter declares (meshlabserver 2020.09 asserts on a script missing one).
+# The staged meshlabserver loads libfilter_fcvt.so with both filters, and every .mlx script in
+# resources/ lists exactly the parameters its filter declares (meshlabserver 2020.09 asserts on
+# a script missing one, and refuses a script with more), under the frozen names.
 # Usage: plugin_loads.sh SOURCE_DIR PLUGIN_SO WORK_DIR
 set -euo pipefail
 FCVT_SOURCE_DIR="$1"; plugin="$2"; work="$3"
@@ -13,15 +14,72 @@ run_meshlabserver "$server" "$work/out/log.txt" -d "$work/out/filters.txt"
 grep -q "Current Plugins Dir is: $work/stage/lib/x86_64-linux-gnu/meshlab/plugins" "$work/out/log.txt.err" \
   || fail "meshlabserver did not search the staged plugin directory"
 
-# The dump has one "\section" per filter followed by one <TR> row per parameter.
-declared="$(awk '/\\section /{ours = index($0, "Remeshing: Field-Aligned CVT (FCVT)") > 0; found += ours}
-                 ours && /<TR>/ {n++}
-                 END {if (!found) print "missing"; else print n + 0}' "$work/out/filters.txt")"
-[ "$declared" != missing ] || fail "filter 'Remeshing: Field-Aligned CVT (FCVT)' not loaded"
-listed="$(grep -c '<Param ' "$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx")"
-echo "filter declares $declared parameters, fcvt-remesh.mlx lists $listed"
-[ "$declared" -eq "$listed" ] || fail "fcvt-remesh.mlx must list every parameter of the filter"
-for p in vertexCount lambda cvtIterations fcvtIterations seed; do
-  grep -q "name=\"$p\"" "$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx" || fail "parameter $p missing from the .mlx"
-done
+# The dump (-d) has one "\section fN NAME" per filter followed by one row per parameter:
+#   <TR><TD> \c TYPE  </TD> <TD> DESCRIPTION </TD> <TD><i> TOOLTIP -- </i></TD> </TR>
+# It does not print parameter names, so a script's <Param> is matched to a declared parameter
+# by (type, description, tooltip); the names are checked against the frozen lists below.
+python3 - "$work/out/filters.txt" "$FCVT_SOURCE_DIR/resources" <<'PY' || fail "filters or .mlx scripts do not match"
+import glob, os, re, sys
+import xml.etree.ElementTree as ET
+
+dump_path, resources = sys.argv[1], sys.argv[2]
+frozen = {  # filter name -> parameter names, in declaration order (frozen API)
+    "Remeshing: Field-Aligned CVT (FCVT)":
+        ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed"],
+    "Compute 6-RoSy Field": ["fieldSource", "seed"],
+}
+declared, current = {}, None
+for line in open(dump_path, encoding="utf-8", errors="replace"):
+    m = re.match(r"\\section f\d+ (.*?)\s*$", line)
+    if m:
+        current = m.group(1)
+        declared.setdefault(current, [])
+        continue
+    m = re.match(r"<TR><TD> \\c (\S+)  </TD> <TD> (.*) </TD> <TD><i> (.*) -- </i></TD> </TR>", line)
+    if m and current is not None:
+        declared[current].append(m.groups())
+
+bad = []
+for name in frozen:
+    if name not in declared:
+        bad.append(f"filter '{name}' not loaded")
+    else:
+        print(f"filter '{name}' declares {len(declared[name])} parameters")
+scripts = sorted(glob.glob(os.path.join(resources, "*.mlx")))
+covered = set()
+for path in scripts:
+    root = ET.parse(path).getroot()
+    for f in root.iter("filter"):
+        name = f.get("name")
+        covered.add(name)
+        params = f.findall("Param")
+        names = [p.get("name") for p in params]
+        rows = [(p.get("type", "").removeprefix("Rich"), p.get("description"), p.get("tooltip"))
+                for p in params]
+        where = f"{os.path.basename(path)} '{name}'"
+        print(f"{where}: {', '.join(names)}")
+        if name not in declared:
+            bad.append(f"{where}: no such filter loaded")
+            continue
+        if name in frozen and names != frozen[name]:
+            bad.append(f"{where}: parameters {names}, frozen list {frozen[name]}")
+        if rows != declared[name]:
+            missing = [r for r in declared[name] if r not in rows]
+            extra = [r for r in rows if r not in declared[name]]
+            bad.append(f"{where}: does not list exactly the declared parameters in order "
+                       f"(missing {missing}, not declared {extra})")
+        for p in params:
+            if p.get("type") == "RichEnum":
+                n = int(p.get("enum_cardinality", "-1"))
+                labels = [p.get(f"enum_val{i}") for i in range(max(n, 0))]
+                if n <= 0 or None in labels or not 0 <= int(p.get("value", "-1")) < n:
+                    bad.append(f"{where}: enum {p.get('name')} malformed")
+for name in frozen:
+    if name not in covered:
+        bad.append(f"no .mlx script in resources/ for '{name}'")
+if bad:
+    print("\n".join("MISMATCH: " + b for b in bad))
+    sys.exit(1)
+print(f"{len(scripts)} scripts match their filters")
+PY
 echo "PASS"

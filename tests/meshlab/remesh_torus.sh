@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# End to end through meshlabserver: stage the plugin, run resources/fcvt-remesh.mlx on the torus,
-# check that the filter ran and the saved mesh clears quality floors.
+# End to end through meshlabserver: stage the plugin, run resources/fcvt-remesh.mlx (an FCVT run
+# with the filter's defaults) on the torus, check that the filter ran, logged the field's
+# singularities and the energies, and that the saved mesh clears quality floors.
 # Usage: remesh_torus.sh SOURCE_DIR PLUGIN_SO WORK_DIR [FCVT_CLI]
 set -euo pipefail
 FCVT_SOURCE_DIR="$1"; plugin="$2"; work="$3"; cli="${4:-}"
@@ -24,6 +25,10 @@ grep -q "filter: Remeshing: Field-Aligned CVT (FCVT)" "$work/out/log.txt" || fai
 grep -q "FCVT: new layer 'torus.off FCVT'" "$work/out/log.txt" || fail "no new layer in the log"
 grep -q "FCVT metrics: Q_min" "$work/out/log.txt" || fail "no metrics in the log"
 grep -q "FCVT times:" "$work/out/log.txt" || fail "no stage times in the log"
+grep -Eq "FCVT field: extrinsic 6-RoSy, [0-9]+ singularities" "$work/out/log.txt" \
+  || fail "no singularity count in the log"
+grep -Eq "FCVT energy at the end of each phase: .*cvt E_CVT .*fcvt E_CVT " "$work/out/log.txt" \
+  || fail "no CVT and FCVT energies in the log"
 [ -s "$out" ] || fail "$out not written"
 # The filter's own report must already clear the Q_avg floor (also checked independently below).
 qavg="$(sed -n 's/^.*FCVT metrics: .*Q_avg \([0-9.eE+-]*\),.*/\1/p' "$work/out/log.txt" | head -n 1)"
