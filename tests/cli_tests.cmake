@@ -27,7 +27,7 @@ add_test(NAME cli_quality_bunny_5000
           ${FCVT_CLI_WORK}/bunny "q_avg>=0.93" "theta_min>=20" "v6_pct>=84" "d_h<=0.006" boundary_loops=5
           vertex_tolerance=0.01)
 add_test(NAME cli_determinism
-  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_determinism.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 2000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_determinism.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 1000
           ${FCVT_CLI_WORK}/determinism)
 
 # The 6-RoSy field (issue 3) and the field-aligned remeshing (issue 4) through the CLI.

@@ -35,6 +35,15 @@ for source, expected_chi in cases:
         check(singularities is not None and singularities >= abs(index_sum or 0),
               f"{label}: {singularities} singularities cannot sum to {index_sum} (indices are +-1 sixth or more)")
 
+# --field user reads the field back from a written PLY: the same singularities.
+first = os.path.splitext(os.path.basename(cases[0][0]))[0]
+written = os.path.join(work, f"{first}-extrinsic.ply")
+text = run_ok([fcvt, "field", written, os.path.join(work, "user.ply"), "--field", "user"])
+again = run_ok([fcvt, "field", cases[0][0], os.path.join(work, "again.ply"), "--seed", "3"])
+for key in ["singularities", "index sum"]:
+    check(printed(text, key, "user") == printed(again, key, "extrinsic"), f"--field user read back: {key} differs")
+check_field_properties(os.path.join(work, "user.ply"), "user")
+
 # --quiet prints nothing and still writes the file.
 quiet_out = os.path.join(work, "quiet.ply")
 source = cases[0][0]
