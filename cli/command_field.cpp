@@ -24,9 +24,9 @@ void printUsage()
     std::printf(
         "Usage: fcvt field IN OUT.ply [--field F] [--seed S] [--quiet]\n"
         "\n"
-        "Computes the 6-RoSy direction field of the triangle mesh IN (cleaned as 'fcvt remesh'\n"
-        "does: unreferenced vertices, degenerate and duplicate faces removed) and writes it to\n"
-        "OUT.ply with the per-vertex properties nx ny nz (unit normal) and rosy_x rosy_y rosy_z\n"
+        "Computes the 6-RoSy direction field of the triangle mesh IN (checked and repaired as\n"
+        "'fcvt remesh' does, each repair printed as a warning) and writes that mesh to OUT.ply\n"
+        "with the per-vertex properties nx ny nz (unit normal) and rosy_x rosy_y rosy_z\n"
         "(unit representative direction; the six field directions are it turned by k * 60 deg).\n"
         "Prints the singularity count, the sum of their indices (in sixths of a turn) and the\n"
         "Euler characteristic chi = V - E + F: on a closed surface the index sum is 6 * chi.\n"
