@@ -63,8 +63,10 @@ struct FieldReport {
 DirectionField computeField(const TriMesh& mesh, const FieldParams& params, FieldReport* report);
 
 //! Builds a field from user vectors per vertex: each is projected on the tangent plane of the
-//! vertex normal and normalised. Throws InvalidInputError on a size mismatch; a vector
-//! (nearly) parallel to the normal is replaced by the smooth extrinsic field's direction there.
+//! vertex normal and normalised. Throws InvalidInputError on a size mismatch or a non-finite
+//! vector; a vector (nearly) parallel to the normal (tangent part below 1e-3 of its length, or
+//! zero) is replaced by the smooth extrinsic field's direction there: the multi-resolution
+//! smoothing of computeField with the usable user directions held fixed.
 DirectionField fieldFromVectors(const TriMesh& mesh, const std::vector<Vec3>& vectors, std::uint64_t seed = 1);
 
 //! Area-weighted vertex normals (unit); isolated vertices get (0, 0, 1).
@@ -82,6 +84,11 @@ struct Singularity {
 
 //! Per-face 6-RoSy index: the sum of the rotations (in multiples of 60°) of the matched
 //! representatives around the face; faces with a non-zero index are singular.
+//! Precisely (field.cpp): with a discrete Levi-Civita connection on the vertex tangent planes
+//! (chart angles of the edges = corner angles scaled by 2π/Θ_v, Knöppel et al. 2013), the turn
+//! δ'_ij ∈ (−π/6, π/6] from d_i transported to j to the nearest representative of d_j, and the
+//! face's share of the angle defects K_f = Σ_corners (2π/Θ_v − 1)·α (0 at border vertices):
+//! index_f = (Σ_{ij ∈ ∂f} δ'_ij + K_f) / (π/3). Exactly 6·χ in total on a closed surface.
 std::vector<Singularity> findSingularities(const TriMesh& mesh, const DirectionField& field);
 
 }  // namespace fieldcvt

@@ -285,15 +285,22 @@ void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<un
                     const int j = g.neighbours[e];
                     const double m00 = di.dot(d[j]), m01 = di.dot(t[j]), m10 = ti.dot(d[j]), m11 = ti.dot(t[j]);
                     // a_p · c_q = cq·u_p + sq·v_p with (u_p, v_p) = cp·(m00, m01) + sp·(m10, m11).
-                    int bp = 0, bq = 0;
-                    double best = -1, bestValue = 0;
+                    double value[9];
                     for (int p = 0; p < 3; ++p) {
                         const double u = kC[p] * m00 + kS[p] * m10, v = kC[p] * m01 + kS[p] * m11;
-                        for (int q = 0; q < 3; ++q) {
-                            const double value = kC[q] * u + kS[q] * v;
-                            if (std::abs(value) > best) best = std::abs(value), bestValue = value, bp = p, bq = q;
-                        }
+                        value[3 * p] = u;
+                        value[3 * p + 1] = 0.5 * u + s * v;
+                        value[3 * p + 2] = -0.5 * u + s * v;
                     }
+                    int bestIndex = 0;  // first maximum of |a_p · c_q|, p major (branch-free)
+                    double best = std::abs(value[0]);
+                    for (int k = 1; k < 9; ++k) {
+                        const double a = std::abs(value[k]);
+                        bestIndex = a > best ? k : bestIndex;
+                        best = a > best ? a : best;
+                    }
+                    const int bp = bestIndex / 3, bq = bestIndex % 3;
+                    const double bestValue = value[bestIndex];
                     // b = ±c_q in i's frame (its normal component drops: the projection P_i),
                     // then rotated by −p·60° about n_i: (R^p d_i)·b = d_i·(R^{−p} b).
                     const double sign = bestValue < 0 ? -1.0 : 1.0;
