@@ -1,10 +1,13 @@
 // Input validation and repair before any work: clear errors, never a crash.
 #include "errors.h"
 #include "mesh_check.h"
+#include "remesh.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -343,4 +346,61 @@ TEST(MeshCheck, CleanMeshPassesUntouched)
     std::vector<int> identity(m.vertexCount());
     for (int v = 0; v < m.vertexCount(); ++v) identity[v] = v;
     EXPECT_EQ(report.cleanIndex, identity);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scale invariance (issue 6): far from the origin or tiny, the result is the unit-scale one.
+
+namespace {
+
+RemeshParams scaleParams(int vertices)
+{
+    RemeshParams p;
+    p.vertexCount = vertices;
+    p.lloydIterations = 5;
+    p.cvtIterations = 5;
+    p.fcvtIterations = 0;
+    p.lambda = 0;
+    p.computeDistances = false;
+    return p;
+}
+
+TriMesh transformed(const TriMesh& m, double scale, const Vec3& offset)
+{
+    TriMesh t = m;
+    for (Vec3& p : t.vertices) p = p * scale + offset;
+    return t;
+}
+
+// Same faces; vertices equal after undoing the transform, to 1e-6 of the bounding-box diagonal.
+void expectSameResult(const TriMesh& input, double scale, const Vec3& offset, int vertices)
+{
+    const RemeshParams params = scaleParams(vertices);
+    const RemeshResult unit = remesh(input, params);
+    const RemeshResult moved = remesh(transformed(input, scale, offset), params);
+    ASSERT_EQ(moved.mesh.vertexCount(), unit.mesh.vertexCount());
+    EXPECT_EQ(moved.mesh.faces, unit.mesh.faces);
+    const double tolerance = 1e-6 * boundingBoxDiagonal(input);
+    double worst = 0;
+    for (int v = 0; v < unit.mesh.vertexCount(); ++v)
+        worst = std::max(worst, ((moved.mesh.vertices[v] - offset) / scale - unit.mesh.vertices[v]).norm());
+    std::printf("scale %g offset %g: worst %.3g of diagonal\n", scale, offset.norm(), worst / boundingBoxDiagonal(input));
+    EXPECT_LE(worst, tolerance) << "scale " << scale << ", offset " << offset.transpose();
+    EXPECT_EQ(moved.warnings, unit.warnings);
+}
+
+}  // namespace
+
+TEST(ScaleInvariance, ClosedMeshFarFromOriginOrTinyGivesTheUnitResult)
+{
+    const TriMesh input = testmesh::torus(32, 12);
+    expectSameResult(input, 1.0, Vec3(1e6, 1e6, 1e6), 80);
+    expectSameResult(input, 1e-6, Vec3::Zero(), 80);
+}
+
+TEST(ScaleInvariance, OpenMeshFarFromOriginOrTinyGivesTheUnitResult)
+{
+    const TriMesh input = testmesh::disk(8);
+    expectSameResult(input, 1.0, Vec3(1e6, -1e6, 1e6), 60);
+    expectSameResult(input, 1e-6, Vec3::Zero(), 60);
 }

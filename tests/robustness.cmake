@@ -1,0 +1,28 @@
+# Robustness (issue 6): a corpus of bad meshes and parameters, and a bounded random fuzzing loop,
+# through the `fcvt` command and through meshlabserver (label: robustness). Each case must end
+# as documented: success with a manifold output, or one clear error -- never a signal or a hang.
+# Included from tests/CMakeLists.txt.
+if(NOT TARGET fcvt)
+  return()
+endif()
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+set(_fcvt_rob_dir "${CMAKE_CURRENT_SOURCE_DIR}/robustness")
+set(_fcvt_rob_work "${CMAKE_CURRENT_BINARY_DIR}/robustness")
+
+add_test(NAME robustness_cli_corpus
+  COMMAND Python3::Interpreter "${_fcvt_rob_dir}/run_cli.py" $<TARGET_FILE:fcvt> "${_fcvt_rob_work}/cli_corpus"
+          --timeout 60 --jobs 2)
+add_test(NAME robustness_cli_fuzz
+  COMMAND Python3::Interpreter "${_fcvt_rob_dir}/fuzz_cli.py" $<TARGET_FILE:fcvt> "${_fcvt_rob_work}/cli_fuzz"
+          --seed 20240606 --count 200 --timeout 20 --jobs 2)
+set_tests_properties(robustness_cli_corpus robustness_cli_fuzz PROPERTIES LABELS robustness TIMEOUT 300)
+
+if(TARGET filter_fcvt)
+  find_program(FCVT_XVFB_RUN xvfb-run)
+  if(FCVT_XVFB_RUN AND EXISTS /usr/bin/meshlabserver)
+    add_test(NAME robustness_meshlab_corpus
+      COMMAND Python3::Interpreter "${_fcvt_rob_dir}/run_meshlab.py" "${PROJECT_SOURCE_DIR}"
+              $<TARGET_FILE:filter_fcvt> "${_fcvt_rob_work}/meshlab_corpus" --timeout 120 --jobs 2)
+    set_tests_properties(robustness_meshlab_corpus PROPERTIES LABELS "robustness;meshlab" TIMEOUT 400)
+  endif()
+endif()

@@ -1,0 +1,149 @@
+"""The corpus of bad meshes and bad parameters of issue 6, one case per documented problem, with
+the documented outcome of each:
+
+  expect "ok"      exit 0 and a manifold output (repaired or handled, and said so)
+  expect "error"   exit code in `codes` (1 runtime, 2 usage) and exactly one stderr line
+                   "fcvt: error: ..." (containing `fragment` if given)
+  expect "either"  one of the two (e.g. a truncated OBJ may still hold whole triangles)
+
+`meshlab` marks the well-formed OFF/PLY files MeshLab 2020.09's own importers load, run through
+meshlabserver too. `same_as` = (case, scale, offset): after undoing the transform the output
+must match that case's output."""
+import random
+
+import meshgen as g
+
+# Fast settings for every case unless it says otherwise: pure CVT, few iterations.
+FAST = ["--vertices", "60", "--cvt-iterations", "5", "--fcvt-iterations", "0", "--lambda", "0"]
+
+
+def case(name, ext, data, expect, args=None, codes=(1,), fragment="", meshlab=False, same_as=None, out_ext="obj"):
+    return {"name": name, "file": name + "." + ext if ext else None, "data": data, "expect": expect,
+            "args": FAST if args is None else args, "codes": list(codes), "fragment": fragment,
+            "meshlab": meshlab, "same_as": same_as, "out_ext": out_ext}
+
+
+def truncate(data, fraction):
+    return data[: int(len(data) * fraction)]
+
+
+def cases():
+    rng = random.Random(6)
+    sphere = g.icosphere(2)
+    torus = g.torus(16, 8)
+    out = []
+
+    # Unreadable files.
+    for ext in ("off", "ply", "obj", "stl"):
+        out.append(case("empty_" + ext, ext, b"", "error"))
+    out.append(case("missing_file", "off", None, "error", fragment="no such file"))
+    for ext in ("off", "ply", "obj", "stl"):
+        out.append(case("garbage_" + ext, ext, bytes(rng.randrange(256) for _ in range(3000)), "error"))
+    out.append(case("garbage_text_obj", "obj", b"hello world\nthis is not a mesh\n\x00\xff\n", "error"))
+    out.append(case("ply_header_only", "ply", b"ply\nformat ascii 1.0\nelement vertex 3\n", "error"))
+    out.append(case("ply_huge_count", "ply", b"ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
+                    b"property float x\nproperty float y\nproperty float z\nelement face 1\n"
+                    b"property list uchar int vertex_indices\nend_header\n\x00\x00\x00\x00", "error"))
+    out.append(case("off_huge_count", "off", b"OFF\n2000000000 2000000000 0\n0 0 0\n", "error"))
+
+    # Truncated files (a whole sphere cut at 60 %).
+    out.append(case("truncated_ply_binary", "ply", truncate(g.ply_bytes(sphere, True), 0.6), "error"))
+    out.append(case("truncated_ply_ascii", "ply", truncate(g.ply_bytes(sphere, False), 0.6), "error"))
+    out.append(case("truncated_off", "off", truncate(g.off_bytes(sphere), 0.6), "error"))
+    out.append(case("truncated_stl_binary", "stl", truncate(g.stl_bytes(sphere, True), 0.6), "error"))
+    # An OBJ has no counts: cut between lines it is a smaller mesh, cut in a line it is malformed.
+    out.append(case("truncated_obj", "obj", truncate(g.obj_bytes(sphere), 0.9), "either"))
+
+    # No surface.
+    pts = sphere[0]
+    out.append(case("point_cloud_off", "off", g.off_bytes((pts, [])), "error", meshlab=True))
+    out.append(case("point_cloud_ply", "ply", g.ply_bytes((pts, [])), "error", meshlab=True))
+    out.append(case("point_cloud_obj", "obj", g.obj_bytes((pts, [])), "error"))
+    out.append(case("all_degenerate_off", "off", g.off_bytes(([[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 2]])),
+                    "error", fragment="degenerate", meshlab=True))
+    out.append(case("bad_index_off", "off", g.off_bytes(([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 7]])), "error"))
+    out.append(case("negative_index_obj", "obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -7\n", "error"))
+
+    # Non-finite coordinates.
+    bad = [list(p) for p in sphere[0]]
+    bad[5][1] = float("nan")
+    out.append(case("nan_off", "off", g.off_bytes((bad, sphere[1])), "error", fragment="non-finite"))
+    out.append(case("nan_ply_binary", "ply", g.ply_bytes((bad, sphere[1]), True), "error", fragment="non-finite",
+                    meshlab=True))
+    bad[5][1] = float("inf")
+    out.append(case("inf_obj", "obj", g.obj_bytes((bad, sphere[1])), "error", fragment="non-finite"))
+    bad[5][1] = float("-inf")
+    out.append(case("inf_ply_float", "ply", g.ply_bytes((bad, sphere[1]), True, "float"), "error",
+                    fragment="non-finite", meshlab=True))
+    out.append(case("huge_coordinates", "ply", g.ply_bytes(g.transform(sphere, 1e300)), "either"))
+
+    # Polygons: triangulated.
+    cube = g.quad_cube(4)
+    out.append(case("quads_obj", "obj", g.obj_bytes(cube), "ok"))
+    out.append(case("quads_off", "off", g.off_bytes(cube), "ok", meshlab=True))
+    out.append(case("quads_ply", "ply", g.ply_bytes(cube, False), "ok", meshlab=True))
+
+    # Topology.
+    out.append(case("nonmanifold_edge", "off", g.off_bytes(g.nonmanifold_edge()), "error",
+                    fragment="non-manifold edge", meshlab=True))
+    out.append(case("nonmanifold_vertex", "off", g.off_bytes(g.two_cones_at_apex(12)), "ok", meshlab=True))
+    flipped = [list(t) for t in torus[1]]
+    for i in rng.sample(range(len(flipped)), len(flipped) // 3):
+        flipped[i] = flipped[i][::-1]
+    out.append(case("inconsistent_orientation", "off", g.off_bytes((torus[0], flipped)), "ok", meshlab=True))
+    out.append(case("moebius", "off", g.off_bytes(g.moebius()), "error", fragment="not orientable", meshlab=True))
+    tiny = g.transform(g.icosphere(1), 1e-3, (3, 0, 0))
+    out.append(case("two_components_one_tiny", "off", g.off_bytes(g.combine(sphere, tiny)), "ok", meshlab=True))
+    out.append(case("two_components", "ply", g.ply_bytes(g.combine(sphere, g.transform(torus, 1, (4, 0, 0)))),
+                    "ok", meshlab=True))
+    out.append(case("duplicate_vertices_soup", "off", g.off_bytes(g.soup(torus)), "ok", meshlab=True))
+    out.append(case("stl_soup_binary", "stl", g.stl_bytes(sphere, True), "ok"))
+    out.append(case("stl_soup_ascii", "stl", g.stl_bytes(sphere, False), "ok"))
+    dup_faces = (sphere[0], sphere[1] + sphere[1][:10] + [t[::-1] for t in sphere[1][10:20]])
+    out.append(case("duplicate_faces", "ply", g.ply_bytes(dup_faces), "ok", meshlab=True))
+    unref = (sphere[0] + [[9, 9, 9], [float("nan")] * 3], sphere[1])
+    out.append(case("unreferenced_vertices", "obj", g.obj_bytes(unref), "ok"))
+    needle = ([[0, 0, 0], [1, 0, 0], [0.5, 1, 0], [0.5, -1e-9, 0]], [[0, 1, 2], [1, 0, 3]])
+    out.append(case("needle_face", "off", g.off_bytes(needle), "either", args=["--vertices", "4"] + FAST[2:]))
+    out.append(case("single_triangle", "off", g.off_bytes(([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])),
+                    "either", meshlab=True))
+    out.append(case("tetrahedron_more_vertices_than_input", "off", g.off_bytes(g.tetrahedron()), "either"))
+    out.append(case("open_grid", "obj", g.obj_bytes(g.grid(6)), "ok"))
+
+    # Scale: far from the origin or tiny, the unit-scale result.
+    out.append(case("unit_sphere", "ply", g.ply_bytes(sphere), "ok", meshlab=True))
+    out.append(case("offset_1e6", "ply", g.ply_bytes(g.transform(sphere, 1, (1e6, -1e6, 1e6))), "ok",
+                    meshlab=True, same_as=("unit_sphere", 1.0, (1e6, -1e6, 1e6))))
+    out.append(case("scale_1e-6", "ply", g.ply_bytes(g.transform(sphere, 1e-6)), "ok",
+                    meshlab=True, same_as=("unit_sphere", 1e-6, (0, 0, 0))))
+
+    # Parameters.
+    def with_args(**over):
+        a = dict(zip(FAST[0::2], FAST[1::2]))
+        for k, v in over.items():
+            a["--" + k.rstrip("_").replace("_", "-")] = v
+        return [x for kv in a.items() for x in kv]
+
+    sphere_off = g.off_bytes(sphere)
+    out.append(case("vertices_2", "off", sphere_off, "error", args=with_args(vertices="2"), codes=(2,),
+                    fragment="--vertices", meshlab=True))
+    out.append(case("vertices_1e9", "off", sphere_off, "error", args=with_args(vertices="1000000000"), codes=(1, 2),
+                    fragment="vertices", meshlab=True))
+    out.append(case("vertices_negative", "off", sphere_off, "error", args=with_args(vertices="-5"), codes=(2,)))
+    out.append(case("lambda_negative", "off", sphere_off, "error", args=with_args(lambda_="-1"), codes=(2,),
+                    fragment="--lambda", meshlab=True))
+    out.append(case("cvt_iterations_negative", "off", sphere_off, "error", args=with_args(cvt_iterations="-1"),
+                    codes=(2,), meshlab=True))
+    out.append(case("zero_iterations", "off", sphere_off, "ok", args=with_args(cvt_iterations="0")))
+
+    # The field term on (default lambda and FCVT iterations) over repaired inputs.
+    field = ["--vertices", "60", "--cvt-iterations", "3", "--fcvt-iterations", "3"]
+    out.append(case("field_on_nonmanifold_vertex", "off", g.off_bytes(g.two_cones_at_apex(12)), "ok", args=field))
+    out.append(case("field_on_two_components", "off", g.off_bytes(g.combine(sphere, tiny)), "ok", args=field))
+    out.append(case("field_on_open_grid", "obj", g.obj_bytes(g.grid(6)), "ok", args=field))
+
+    # Output side.
+    for ext in ("ply", "off", "stl"):
+        out.append(case("write_" + ext, "off", sphere_off, "ok", out_ext=ext))
+    out.append(case("unwritable_output", "off", sphere_off, "error", out_ext="/nonexistent-dir/out.obj"))
+    return out
