@@ -269,8 +269,12 @@ void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<un
     constexpr double s = rosy::kSin60;
     static constexpr double kC[3] = {1.0, 0.5, -0.5}, kS[3] = {0.0, s, s};
 
+    // Threads only where a colour class holds thousands of vertices: every class ends with a
+    // barrier, and on a busy machine a barrier can cost a scheduler time slice, so small
+    // levels run faster on one thread. One parallel region for all sweeps of the level.
+    const bool parallel = colours > 0 && n / colours >= 4096;
+#pragma omp parallel if (parallel)
     for (int it = 0; it < iterations; ++it) {
-#pragma omp parallel if (n > 8192)
         for (int c = 0; c < colours; ++c) {
             const int begin = g.colourOffsets[c], end = g.colourOffsets[c + 1];
             // Vertices of one colour have no edge between them: updating them in any order or
@@ -318,7 +322,10 @@ void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<un
                 }
             }
         }
-        if (energies) energies->push_back(graphEnergy(g, d));
+        if (energies) {
+#pragma omp single
+            energies->push_back(graphEnergy(g, d));  // implicit barrier after single
+        }
     }
 }
 
@@ -401,7 +408,7 @@ std::vector<Vec3> solveField(const TriMesh& mesh, const std::vector<Vec3>& norma
         // tangent plane (Jakob et al. 2015, §5); fixed children keep theirs.
         const FieldGraph& fine = h.levels[l - 1];
         const std::vector<int>& parent = h.parents[l - 1];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (fine.vertexCount() > 32768)
         for (int v = 0; v < fine.vertexCount(); ++v)
             if (!fixed[l - 1][v]) normalisedTangent(dirs[l][parent[v]], fine.normals[v], dirs[l - 1][v]);
     }

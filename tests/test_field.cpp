@@ -2,6 +2,7 @@
 // singularities, determinism.
 #include "errors.h"
 #include "field.h"
+#include "field_hierarchy.h"
 #include "interpolation.h"
 #include "mesh_check.h"
 #include "mesh_io.h"
@@ -243,7 +244,11 @@ TEST(Field, SharpEdgesConstrainTheField)
 
 TEST(Field, SameSeedSameFieldWithOneOrTwoThreads)
 {
-    const TriMesh m = testmesh::icosphere(5);  // colour classes large enough to run in parallel
+    const TriMesh m = testmesh::torus(240, 120);
+    {  // colour classes large enough for the smoothing to run on threads (field_hierarchy.cpp)
+        const FieldGraph& g = buildFieldHierarchy(m, vertexNormals(m)).levels[0];
+        ASSERT_GE(m.vertexCount() / (static_cast<int>(g.colourOffsets.size()) - 1), 4096);
+    }
     FieldParams params;
     params.seed = 42;
     const int saved = omp_get_max_threads();
