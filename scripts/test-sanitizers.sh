@@ -25,9 +25,13 @@ cmake -S "$here" -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFCVT_SANITIZE=ON 
 cmake --build "$san" -j "$jobs" --target fcvt fcvt_tests || exit 1
 
 echo "== unit tests under ASan/UBSan"
-"$san/tests/fcvt_tests" --gtest_brief=1 >"$san/unit-tests.log" 2>&1 || finding "unit tests failed under sanitizers (log: $san/unit-tests.log)"
-tail -n 20 "$san/unit-tests.log"
-grep -qE "ERROR: (Address|Leak)Sanitizer|runtime error:" "$san/unit-tests.log" && finding "sanitizer report in the unit tests ($san/unit-tests.log)"
+# Through CTest, one process per GoogleTest case (gtest_discover_tests): a sanitizer report
+# aborts only its own test. Unit tests are the "Suite.Name" ones (the end-to-end tests differ).
+ctest --test-dir "$san" -R '^[A-Za-z0-9_]+\.[A-Za-z0-9_/]+$' -j "$jobs" --output-on-failure \
+      >"$san/unit-tests.log" 2>&1 || finding "unit tests failed under sanitizers (log: $san/unit-tests.log)"
+grep -E "tests passed|tests failed|\(Failed\)|\(Subprocess aborted\)|\(Timeout\)" "$san/unit-tests.log" | tail -n 25
+grep -qE "ERROR: (Address|Leak)Sanitizer|runtime error:" "$san/unit-tests.log" \
+  && finding "sanitizer report in the unit tests: $(grep -m1 -E "SUMMARY: |runtime error:" "$san/unit-tests.log")"
 
 echo "== CLI robustness corpus under ASan/UBSan"
 python3 "$here/tests/robustness/run_cli.py" "$san/cli/fcvt" "$san/robustness/cli_corpus" --timeout 120 --jobs "$jobs" \
