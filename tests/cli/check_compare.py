@@ -1,6 +1,7 @@
 """`fcvt compare IN --vertices N`: the table has a header and one row per method (CVT, FCVT)
-with the paper's Table 2 columns; with --json the rows carry the metrics keys and FCVT has a
-higher V6% than CVT on the same seed. Usage: check_compare.py FCVT INPUT VERTICES TABLE_VERTICES"""
+with the paper's Table 2 columns; with --json the rows carry the metrics keys, and on the same
+seed FCVT is at least 2 points more regular (V6%) than CVT with no worse Q_avg (measured on
+fertility 3000: +3.3 points, Q_avg 0.938 -> 0.947). Usage: check_compare.py FCVT INPUT VERTICES TABLE_VERTICES"""
 import json
 import sys
 
@@ -31,6 +32,7 @@ if len(data) == 2:
         print(row["method"], {k: row[k] for k in ["vertices", "faces", "q_avg", "theta_min", "v6_pct", "d_h", "seconds"]})
     check(cvt["lambda"] == 0 and cvt["cvt_iterations"] == 130 and cvt["fcvt_iterations"] == 0, f"CVT params {cvt}")
     check(fcvt_row["lambda"] > 0 and fcvt_row["fcvt_iterations"] > 0, f"FCVT params {fcvt_row}")
-    check(fcvt_row["v6_pct"] > cvt["v6_pct"], f"V6%: FCVT {fcvt_row['v6_pct']} is not above CVT {cvt['v6_pct']}")
+    check(fcvt_row["v6_pct"] >= cvt["v6_pct"] + 2, f"V6%: FCVT {fcvt_row['v6_pct']} is not 2 points above CVT {cvt['v6_pct']}")
+    check(fcvt_row["q_avg"] >= cvt["q_avg"], f"Q_avg: FCVT {fcvt_row['q_avg']} below CVT {cvt['q_avg']}")
 
 finish()
