@@ -107,7 +107,8 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         for (Vec3& p : surface.vertices) p = frame.toWork(p);
     });
 
-    // The field is needed when E_field is used, and is measured alongside whenever it exists.
+    // The field is needed when E_field is used (in the FCVT iterations only: measuring it during
+    // the CVT iterations would cost a closest-point query per sample and evaluation).
     const bool useField = params.fcvtIterations > 0 && params.lambda > 0;
     const std::vector<Segment> border = boundarySegments(surface);
     const double expectedEvaluations = params.lloydIterations + 1.1 * (params.cvtIterations + params.fcvtIterations) +
@@ -148,7 +149,6 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             }
             result.singularities = findSingularities(surface, field);
             for (Singularity& s : result.singularities) s.position = frame.fromWork(s.position);
-            energy.setField(&field, &tree, 0.0);  // measured during CVT, weighted in FCVT
         });
     }
 

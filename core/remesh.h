@@ -38,7 +38,7 @@ struct RemeshParams {
 struct EnergyRecord {
     std::string phase;  //!< "lloyd", "cvt" or "fcvt"
     double cvt = 0;     //!< E_CVT at the working scale (mean cell area 1)
-    double field = 0;   //!< E_field, measured also during CVT when a field is in use
+    double field = 0;   //!< E_field (FCVT phase only; 0 in the Lloyd and CVT phases, where it is not computed)
 };
 
 //! One timed stage of a run ("sampling", "cvt", "rdt", "metrics", ...), in seconds.
