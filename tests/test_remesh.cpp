@@ -1,6 +1,7 @@
 // The public entry point: properties of the output (not exact counts), determinism,
 // parameter validation, progress and cancellation.
 #include "errors.h"
+#include "mesh_io.h"
 #include "remesh.h"
 #include "test_meshes.h"
 
@@ -113,4 +114,36 @@ TEST(Remesh, ReportsProgressInOrderAndCanBeCancelled)
 
     int calls = 0;
     EXPECT_THROW(remesh(input, quick(100), [&](const std::string&, double) { return ++calls < 5; }), CancelledError);
+}
+
+TEST(Remesh, FieldAlignmentMakesTheCylinderMoreRegularThanCvt)
+{
+    // The paper's cylinder experiment (Fig. 7): aligned to the maximal curvature direction,
+    // FCVT has far fewer irregular vertices than CVT, with better triangles.
+    // (Measured at 500 vertices: CVT V6 86.3 %, Q_avg 0.941; FCVT 95.6 %, 0.966.)
+    const TriMesh cylinder = readMesh(testmesh::resource("cylinder.off"));
+    RemeshParams cvt;
+    cvt.vertexCount = 500;
+    cvt.lambda = 0;
+    cvt.cvtIterations = 130;
+    cvt.fcvtIterations = 0;
+    RemeshParams fcvt;
+    fcvt.vertexCount = 500;
+    fcvt.fieldSource = FieldSource::CurvatureMax;
+    const RemeshResult a = remesh(cylinder, cvt), b = remesh(cylinder, fcvt);
+    EXPECT_GT(b.metrics.v6Pct, a.metrics.v6Pct + 5);
+    EXPECT_GT(b.metrics.qAvg, a.metrics.qAvg);
+    EXPECT_GT(b.metrics.thetaMin, 30.0);
+    EXPECT_EQ(b.outputTopology.boundaryLoops, 2);
+    // The field went along: one unit direction per output vertex, orthogonal to its normal.
+    ASSERT_EQ(b.outputDirections.size(), b.mesh.vertices.size());
+    for (size_t v = 0; v < b.outputDirections.size(); ++v) {
+        EXPECT_NEAR(b.outputDirections[v].norm(), 1.0, 1e-9);
+        EXPECT_NEAR(b.outputDirections[v].dot(b.outputNormals[v]), 0.0, 1e-9);
+    }
+    // E_field went down during the FCVT iterations (paper Fig. 8).
+    double first = -1, last = -1;
+    for (const EnergyRecord& r : b.energyHistory)
+        if (r.phase == "fcvt") (first < 0 ? first : last) = r.field;
+    EXPECT_LT(last, 0.5 * first);
 }
