@@ -37,7 +37,7 @@ echo "== CLI robustness corpus under ASan/UBSan"
 python3 "$here/tests/robustness/run_cli.py" "$san/cli/fcvt" "$san/robustness/cli_corpus" --timeout 120 --jobs "$jobs" \
   || finding "CLI robustness corpus under sanitizers"
 echo "== CLI fuzzing loop under ASan/UBSan"
-python3 "$here/tests/robustness/fuzz_cli.py" "$san/cli/fcvt" "$san/robustness/cli_fuzz" --count 200 --timeout 60 --jobs "$jobs" \
+python3 "$here/tests/robustness/fuzz_cli.py" "$san/cli/fcvt" "$san/robustness/cli_fuzz" --count "${FCVT_SANITIZE_FUZZ_COUNT:-100}" --timeout 60 --jobs "$jobs" \
   || finding "CLI fuzzing loop under sanitizers"
 
 # --- 2. libFuzzer ----------------------------------------------------------------------------
