@@ -11,6 +11,58 @@ long long edgeKey(int a, int b, int n) { return static_cast<long long>(a) * n + 
 
 }  // namespace
 
+int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex)
+{
+    // Union the face corners around each vertex across the edges they share; every class of
+    // corners beyond the first at a vertex is one more fan, which gets its own vertex copy.
+    const int cornerCount = 3 * mesh.faceCount();
+    std::vector<int> parent(cornerCount);
+    for (int c = 0; c < cornerCount; ++c) parent[c] = c;
+    auto find = [&](int c) {
+        while (parent[c] != c) c = parent[c] = parent[parent[c]];
+        return c;
+    };
+    // Directed half-edge (a, b) of face f: its corner at a is 3f+k, at b is 3f+(k+1)%3. The
+    // opposite half-edge (b, a) of the neighbouring face shares both endpoints.
+    std::vector<std::pair<long long, int>> halfEdges;
+    halfEdges.reserve(cornerCount);
+    const long long n = mesh.vertexCount();
+    for (int f = 0; f < mesh.faceCount(); ++f)
+        for (int k = 0; k < 3; ++k) halfEdges.push_back({mesh.faces[f][k] * n + mesh.faces[f][(k + 1) % 3], 3 * f + k});
+    std::sort(halfEdges.begin(), halfEdges.end());
+    for (int f = 0; f < mesh.faceCount(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+            const auto it = std::lower_bound(halfEdges.begin(), halfEdges.end(), std::make_pair(b * n + a, -1));
+            if (it == halfEdges.end() || it->first != b * n + a) continue;
+            const int g = it->second / 3, kb = it->second % 3;  // (b, a) in face g, corner of b is kb
+            auto unite = [&](int x, int y) { parent[find(x)] = find(y); };
+            unite(3 * f + k, 3 * g + (kb + 1) % 3);  // corners at a
+            unite(3 * f + (k + 1) % 3, 3 * g + kb);  // corners at b
+        }
+    std::vector<int> firstClass(mesh.vertices.size(), -1);
+    std::vector<std::pair<int, int>> copyOf;  // (class root, new vertex)
+    int split = 0;
+    for (int c = 0; c < cornerCount; ++c) {
+        int& v = mesh.faces[c / 3][c % 3];
+        const int root = find(c);
+        if (firstClass[v] < 0 || firstClass[v] == root) {
+            firstClass[v] = root;
+            continue;
+        }
+        auto it = std::find_if(copyOf.begin(), copyOf.end(), [&](const auto& p) { return p.first == root; });
+        if (it == copyOf.end()) {
+            mesh.vertices.push_back(mesh.vertices[v]);
+            seedOfVertex.push_back(seedOfVertex[v]);
+            copyOf.push_back({root, mesh.vertexCount() - 1});
+            it = copyOf.end() - 1;
+            ++split;
+        }
+        v = it->second;
+    }
+    return split;
+}
+
 RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
                      const ClosestPointTree& surface)
 {
@@ -73,6 +125,11 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::arra
         result.mesh.vertices[v] = surface.closest(seeds[result.seedOfVertex[v]]).point;
     result.mesh.faces.reserve(faces.size());
     for (const auto& t : faces) result.mesh.faces.push_back({vertexOfSeed[t[0]], vertexOfSeed[t[1]], vertexOfSeed[t[2]]});
+    result.splitVertices = splitNonManifoldVertices(result.mesh, result.seedOfVertex);
+    if (result.splitVertices > 0)
+        result.warnings.push_back(std::to_string(result.splitVertices) +
+                                  " output vertices joined separate fans of faces (a restricted cell in several pieces: thin parts or "
+                                  "near-touching sheets) and were split, one vertex per fan");
 
     if (result.removedFaces > 0)
         result.warnings.push_back("removed " + std::to_string(result.removedFaces) +

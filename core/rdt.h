@@ -14,6 +14,7 @@ struct RdtResult {
     std::vector<int> seedOfVertex;  //!< sample index of each output vertex
     int droppedSeeds = 0;           //!< samples in no triangle (empty or isolated cells)
     int removedFaces = 0;           //!< faces removed to keep the output edge-manifold
+    int splitVertices = 0;          //!< extra vertices made by splitting non-manifold vertices
     std::vector<std::string> warnings;
 };
 
@@ -21,6 +22,10 @@ struct RdtResult {
 //! non-manifold (more than two faces, or two faces with the same orientation), drops samples
 //! that no face uses and places each vertex at its sample's closest point on the input surface
 //! (which keeps the approximation error at CVT level).
+//! Gives every fan of faces around a vertex its own vertex (same position and sample), so the
+//! mesh is vertex-manifold; `seedOfVertex` grows with the copies. Returns the copies made.
+int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex);
+
 RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
                      const ClosestPointTree& surface);
 

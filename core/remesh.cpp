@@ -12,6 +12,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -189,6 +190,9 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         RdtResult rdt = extractRdt(seeds, rvd.triangles, tree);
         result.warnings.insert(result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         result.mesh = std::move(rdt.mesh);
+        if (result.mesh.faces.empty())
+            throw SolverError("no restricted Delaunay triangle survives with " + std::to_string(params.vertexCount) +
+                              " samples on this surface: use more vertices");
         if (useField) {
             const FieldFrames frames = energy.framesAt(result.mesh.vertices);
             result.outputNormals = frames.normals;
@@ -204,7 +208,9 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         if (params.computeDistances && !result.mesh.faces.empty()) {
             TriMesh reference = surface;
             for (Vec3& p : reference.vertices) p = frame.fromWork(p);
-            const DistanceMetrics d = computeDistance(result.mesh, reference);
+            // Dense enough for a Hausdorff figure at the meshes' resolution, capped for big ones.
+            const int samples = std::clamp(20 * (result.mesh.faceCount() + reference.faceCount()), 20000, 200000);
+            const DistanceMetrics d = computeDistance(result.mesh, reference, samples);
             result.metrics.dRms = d.rms;
             result.metrics.dH = d.hausdorff;
         }

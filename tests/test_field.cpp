@@ -246,7 +246,8 @@ TEST(Field, SameSeedSameFieldWithOneOrTwoThreads)
 {
     const TriMesh m = testmesh::torus(240, 120);
     {  // colour classes large enough for the smoothing to run on threads (field_hierarchy.cpp)
-        const FieldGraph& g = buildFieldHierarchy(m, vertexNormals(m)).levels[0];
+        const auto hierarchy = buildFieldHierarchy(m, vertexNormals(m));
+        const FieldGraph& g = hierarchy.levels[0];
         ASSERT_GE(m.vertexCount() / (static_cast<int>(g.colourOffsets.size()) - 1), 4096);
     }
     FieldParams params;
