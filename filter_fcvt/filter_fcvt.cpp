@@ -314,15 +314,26 @@ bool FilterFcvtPlugin::applyField(MeshDocument& md, const RichParameterList& par
     return computeRosyField(md, params, cb);
 }
 
+MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
+{
+    MeshModel* input = md.mm();
+    if (input == nullptr) {
+        fail("FCVT: no mesh loaded");
+        return nullptr;
+    }
+    if (input->cm.fn == 0) {
+        fail(QString("FCVT: layer '%1' has no faces; a triangle mesh is required").arg(input->label()));
+        return nullptr;
+    }
+    return input;
+}
+
 bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
                                   vcg::CallBackPos* cb)
 {
-    MeshModel* input = md.mm();
+    MeshModel* input = currentTriangleLayer(md);
     if (input == nullptr)
-        return fail("FCVT: no mesh loaded");
-    if (input->cm.fn == 0)
-        return fail(QString("FCVT: layer '%1' has no faces; a triangle mesh is required")
-                        .arg(input->label()));
+        return false;
 
     fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
     fieldcvt::RemeshParams run = params;
@@ -404,12 +415,9 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
 bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
                                         vcg::CallBackPos* cb)
 {
-    MeshModel* input = md.mm();
+    MeshModel* input = currentTriangleLayer(md);
     if (input == nullptr)
-        return fail("FCVT: no mesh loaded");
-    if (input->cm.fn == 0)
-        return fail(QString("FCVT: layer '%1' has no faces; a triangle mesh is required")
-                        .arg(input->label()));
+        return false;
 
     if (cb != nullptr)
         cb(0, "checking the input");

@@ -56,5 +56,7 @@ private:
     //! Fails the filter: sets errorMessage and also logs it, because meshlabserver 2020.09 prints
     //! the filter log but never errorMsg().
     bool fail(const QString& message);
+    //! The current layer if it holds faces; otherwise nullptr, with errorMessage set.
+    MeshModel* currentTriangleLayer(MeshDocument& md);
     void logReport(const fieldcvt::RemeshResult& result, const QString& layerName);
 };
