@@ -39,6 +39,8 @@ void printUsage()
         "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d)\n"
         "  --seed S              seed of the sampling and the field, >= 0 (default %llu); same seed, same output\n"
         "  --threads T           OpenMP threads, >= 0 (default %d: all cores); output does not depend on it\n"
+        "  --time-limit SEC      stop optimising after SEC seconds and write the best result so far,\n"
+        "                        with a warning (default 0: no limit)\n"
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
         "                        history, field singularities, warnings\n"
         "  --quiet               print nothing but errors\n"
@@ -58,6 +60,7 @@ RemeshParams paramsFrom(const Arguments& a)
     p.fcvtIterations = static_cast<int>(a.integer("fcvt-iterations", p.fcvtIterations, 0, INT_MAX));
     p.seed = a.unsignedInteger("seed", p.seed);
     p.threads = static_cast<int>(a.integer("threads", p.threads, 0, 4096));
+    p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds, 0.0);
     return p;
 }
 
@@ -70,7 +73,8 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"cvt_iterations", p.cvtIterations},
             {"fcvt_iterations", p.fcvtIterations},
             {"seed", p.seed},
-            {"threads", p.threads}};
+            {"threads", p.threads},
+            {"time_limit_s", p.timeLimitSeconds}};
 }
 
 }  // namespace
@@ -78,7 +82,7 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
 int runRemesh(const std::vector<std::string>& args)
 {
     const Arguments a(args,
-                      {"vertices", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads", "report"},
+                      {"vertices", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads", "time-limit", "report"},
                       {"quiet", "help"});
     if (a.flag("help")) {
         printUsage();

@@ -22,6 +22,11 @@ struct IOError : Error {
 struct SolverError : Error {
     using Error::Error;
 };
+//! RemeshParams::timeLimitSeconds ran out during an optimisation stage. remesh() catches it
+//! and goes on with the best samples so far (and a warning); it never reaches the caller.
+struct TimeLimitReached : Error {
+    TimeLimitReached() : Error("time limit reached") {}
+};
 //! The Progress callback asked to stop.
 struct CancelledError : Error {
     CancelledError() : Error("cancelled") {}

@@ -112,6 +112,10 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
             throw;
         } catch (const CancelledError&) {
             throw;
+        } catch (const TimeLimitReached&) {
+            // Out of time: hand back the best point seen, then let the caller stop.
+            if (objective.best.size() == x.size()) seeds = unflatten(objective.best);
+            throw;
         } catch (const std::exception& e) {
             // Line search failed (non-smooth point of the RVD energy, or converged to round-off):
             // restart L-BFGS from the best point, which forgets the curvature pairs.

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace fieldcvt {
 
@@ -33,6 +34,7 @@ void validate(const RemeshParams& p)
     if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
         throw InvalidInputError("iteration counts must be >= 0");
     if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
+    if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds)) throw InvalidInputError("time limit must be >= 0 seconds");
 }
 
 // The working frame (§5): centred, and scaled so that the mean restricted Voronoi cell has
@@ -57,7 +59,12 @@ public:
     {
         const auto start = Clock::now();
         report(name, percent_);
-        stage();
+        try {
+            stage();
+        } catch (const TimeLimitReached&) {
+            result_.stageTimes.push_back({name, secondsSince(start)});  // cut short, still timed
+            throw;
+        }
         result_.stageTimes.push_back({name, secondsSince(start)});
     }
 
@@ -128,6 +135,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         }
         const double fraction = std::min(1.0, energy.evaluations() / expectedEvaluations);
         pipeline.report(stage, 5 + 85 * fraction);
+        if (params.timeLimitSeconds > 0 && secondsSince(start) > params.timeLimitSeconds) throw TimeLimitReached();
     };
 
     if (useField) {
@@ -155,30 +163,37 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
 
     std::vector<Vec3> seeds;
     pipeline.run("sampling", [&] { seeds = sampleSurfaceUniform(surface, params.vertexCount, params.seed); });
-    pipeline.run("lloyd", [&] {
-        stage = "lloyd";
-        lloydRelaxation(energy, surface, seeds, params.lloydIterations, params.seed);
-    });
     auto lbfgs = [&](int iterations) {
         OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{iterations});
         result.warnings.insert(result.warnings.end(), stats.warnings.begin(), stats.warnings.end());
     };
-    pipeline.run("cvt", [&] {
-        stage = "cvt";
-        best = std::numeric_limits<double>::infinity();
-        lbfgs(params.cvtIterations);
-    });
-    pipeline.run("boundary", [&] {
-        stage = "boundary";
-        energy.setFrozen(relaxBoundarySamples(energy, seeds, border, params.boundaryIterations));
-    });
-    if (params.fcvtIterations > 0) {
-        pipeline.run("fcvt", [&] {
-            stage = "fcvt";
-            best = std::numeric_limits<double>::infinity();
-            energy.setField(useField ? &field : nullptr, &tree, params.lambda);
-            lbfgs(params.fcvtIterations);
+    try {
+        pipeline.run("lloyd", [&] {
+            stage = "lloyd";
+            lloydRelaxation(energy, surface, seeds, params.lloydIterations, params.seed);
         });
+        pipeline.run("cvt", [&] {
+            stage = "cvt";
+            best = std::numeric_limits<double>::infinity();
+            lbfgs(params.cvtIterations);
+        });
+        pipeline.run("boundary", [&] {
+            stage = "boundary";
+            energy.setFrozen(relaxBoundarySamples(energy, seeds, border, params.boundaryIterations));
+        });
+        if (params.fcvtIterations > 0) {
+            pipeline.run("fcvt", [&] {
+                stage = "fcvt";
+                best = std::numeric_limits<double>::infinity();
+                energy.setField(useField ? &field : nullptr, &tree, params.lambda);
+                lbfgs(params.fcvtIterations);
+            });
+        }
+    } catch (const TimeLimitReached&) {
+        std::ostringstream message;
+        message << "time limit of " << params.timeLimitSeconds << " s reached during " << stage
+                << ": the output is made from the best samples so far";
+        result.warnings.push_back(message.str());
     }
 
     pipeline.run("rdt", [&] {

@@ -31,6 +31,9 @@ struct RemeshParams {
     std::vector<Vec3> userDirections;
     std::uint64_t seed = 1;        //!< seed of the initial sampling and of the field
     int threads = 0;               //!< OpenMP threads, 0 = runtime default
+    //! Wall-clock budget of the optimisation (Lloyd, CVT, FCVT) in seconds, 0 = none. When it
+    //! runs out, the output is made from the best samples so far and a warning says so.
+    double timeLimitSeconds = 0;
     bool computeDistances = true;  //!< also compute d_RMS / d_H against the input in the report
 };
 

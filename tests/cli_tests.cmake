@@ -44,3 +44,8 @@ set_tests_properties(cli_usage_errors cli_metrics_json cli_field_singularities P
 set_tests_properties(cli_remesh_field cli_compare_fertility_3000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
 set_tests_properties(cli_quality_fertility_3000 cli_quality_torus_1000 cli_quality_bunny_5000 cli_determinism
   PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
+
+add_test(NAME cli_time_limit
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_time_limit.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off
+          ${FCVT_CLI_WORK}/time_limit)
+set_tests_properties(cli_time_limit PROPERTIES LABELS "cli" TIMEOUT 300)

@@ -167,3 +167,20 @@ TEST(Remesh, FieldAlignmentMakesTheCylinderMoreRegularThanCvt)
         if (r.phase == "fcvt") (first < 0 ? first : last) = r.field;
     EXPECT_LT(last, 0.5 * first);
 }
+
+TEST(Remesh, TimeLimitEndsWithTheBestResultSoFarAndAWarning)
+{
+    RemeshParams p = quick(400);
+    p.cvtIterations = 100000;  // far more than the budget allows
+    p.timeLimitSeconds = 0.3;
+    const RemeshResult r = remesh(testmesh::icosphere(4), p);
+    bool warned = false;
+    for (const std::string& w : r.warnings) warned |= w.find("time limit") != std::string::npos;
+    EXPECT_TRUE(warned);
+    EXPECT_TRUE(r.outputTopology.manifold());
+    EXPECT_EQ(r.outputTopology.genus, 0);
+    EXPECT_GT(r.metrics.qAvg, 0.85);
+    EXPECT_LT(r.evaluations, 100000);
+    p.timeLimitSeconds = -1;
+    EXPECT_THROW(remesh(testmesh::icosphere(1), p), InvalidInputError);
+}
