@@ -9,10 +9,14 @@
 #include "mesh_io.h"
 #include "remesh.h"
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fieldcvt::cli {
 
@@ -22,7 +26,7 @@ void printUsage()
 {
     const RemeshParams defaults;
     std::printf(
-        "Usage: fcvt remesh IN OUT --vertices N [options]\n"
+        "Usage: fcvt remesh IN OUT (--vertices N | --target-length L) [options]\n"
         "\n"
         "Remeshes the triangle mesh IN into OUT with about N vertices: CVT iterations, then FCVT\n"
         "iterations that also align the edges to a 6-RoSy direction field (E_CVT + lambda * E_field).\n"
@@ -30,7 +34,9 @@ void printUsage()
         "OUT also gets the field at its vertices (nx ny nz, rosy_x rosy_y rosy_z) when one was used.\n"
         "\n"
         "Options:\n"
-        "  --vertices N          target vertex count, >= 4 (required)\n"
+        "  --vertices N          target vertex count, >= 4\n"
+        "  --target-length L     target edge length (IN's units), > 0, instead of --vertices: the\n"
+        "                        vertex count is 2 * area / (sqrt(3) * L^2); exactly one is required\n"
         "  --field F             the field to align to: extrinsic (smooth, Instant Meshes),\n"
         "                        curvature-max, curvature-min, or user (IN's PLY vertex properties\n"
         "                        rosy_x rosy_y rosy_z) (default %s)\n"
@@ -49,11 +55,43 @@ void printUsage()
         defaults.fcvtIterations, static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
+// Above this a --target-length is taken for a mistake (hours of run time, gigabytes).
+constexpr double kMaxVerticesFromLength = 5e6;
+
+// Mean length over the distinct (undirected) edges of the faces.
+double meanEdgeLength(const TriMesh& mesh)
+{
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(mesh.faces.size() * 3);
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k)
+            edges.emplace_back(std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    double sum = 0;
+    for (const auto& e : edges) sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).norm();
+    return edges.empty() ? 0.0 : sum / double(edges.size());
+}
+
+// Equilateral triangulation of edge L: about 2 faces per vertex, each of area sqrt(3) L^2 / 4.
+int vertexCountForLength(const TriMesh& input, double length)
+{
+    const double area = surfaceArea(input);
+    const double wanted = 2.0 * area / (std::sqrt(3.0) * length * length);
+    if (!std::isfinite(wanted) || wanted > kMaxVerticesFromLength)
+        throw UsageError("--target-length " + std::to_string(length) + " on a surface of area " + std::to_string(area) +
+                         " would give " + std::to_string(wanted) + " vertices, more than the maximum " +
+                         std::to_string(static_cast<long long>(kMaxVerticesFromLength)) + "; choose a longer edge");
+    return std::max(4, static_cast<int>(std::lround(wanted)));
+}
+
 RemeshParams paramsFrom(const Arguments& a)
 {
-    if (!a.has("vertices")) throw UsageError("remesh needs --vertices N (the target vertex count)");
+    if (a.has("vertices") == a.has("target-length"))
+        throw UsageError("remesh needs exactly one of --vertices N (the target vertex count) and --target-length L "
+                         "(the target edge length)");
     RemeshParams p;
-    p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, 4, INT_MAX));
+    if (a.has("vertices")) p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, 4, INT_MAX));
     p.fieldSource = fieldOption(a, p.fieldSource, true);
     p.lambda = a.number("lambda", p.lambda, 0.0);
     p.cvtIterations = static_cast<int>(a.integer("cvt-iterations", p.cvtIterations, 0, INT_MAX));
@@ -82,7 +120,7 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
 int runRemesh(const std::vector<std::string>& args)
 {
     const Arguments a(args,
-                      {"vertices", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads", "time-limit", "report"},
+                      {"vertices", "target-length", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads", "time-limit", "report"},
                       {"quiet", "help"});
     if (a.flag("help")) {
         printUsage();
@@ -94,6 +132,10 @@ int runRemesh(const std::vector<std::string>& args)
     const std::string& inPath = a.positional()[0];
     const std::string& outPath = a.positional()[1];
     RemeshParams params = paramsFrom(a);
+    // Checked before reading the input (a usage error); applied once the area is known.
+    const double targetLength = a.number("target-length", 0.0, 0.0);
+    if (a.has("target-length") && !(targetLength > 0))
+        throw UsageError("--target-length must be > 0, got " + *a.text("target-length"));
     const bool quiet = a.flag("quiet");
     if (params.fieldSource == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
@@ -104,6 +146,7 @@ int runRemesh(const std::vector<std::string>& args)
     MeshReadInfo readInfo;
     VertexAttributes inputAttributes;
     const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
+    if (targetLength > 0) params.vertexCount = vertexCountForLength(input, targetLength);
     if (params.fieldSource == FieldSource::User) params.userDirections = userField(inPath, inputAttributes);
     const double readSeconds = secondsSince(start);
 
@@ -133,6 +176,7 @@ int runRemesh(const std::vector<std::string>& args)
     for (const std::string& note : readInfo.notes) warnings.push_back(inPath + ": " + note);
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
     const TopologySummary outputTopology = computeTopology(result.mesh);
+    const double meanEdge = meanEdgeLength(result.mesh);
     const double totalSeconds = secondsSince(start);
 
     if (auto reportPath = a.text("report")) {
@@ -141,6 +185,8 @@ int runRemesh(const std::vector<std::string>& args)
         for (const StageTime& stage : result.stageTimes) times[stage.stage] = stage.seconds;
         times["write"] = writeSeconds;
         times["total"] = totalSeconds;
+        nlohmann::ordered_json paramsOut = paramsJson(params);
+        if (targetLength > 0) paramsOut["target_length"] = targetLength;
         nlohmann::ordered_json field = fieldJson(params.fieldSource, result.singularities);
         // The core computes a field only when it is used (lambda > 0 and FCVT iterations).
         field["computed"] = !result.outputDirections.empty() || !result.singularities.empty();
@@ -148,12 +194,13 @@ int runRemesh(const std::vector<std::string>& args)
                                                {"output_file", outPath},
                                                {"vertices", result.mesh.vertexCount()},
                                                {"faces", result.mesh.faceCount()},
+                                               {"mean_edge_length", meanEdge},
                                                {"evaluations", result.evaluations},
                                                {"time_s", times},
                                                {"metrics", metricsJson(result.metrics)},
                                                {"input", topologyJson(result.inputTopology)},
                                                {"output", topologyJson(outputTopology)},
-                                               {"params", paramsJson(params)},
+                                               {"params", paramsOut},
                                                {"field", field},
                                                {"energy_history", energyHistoryJson(result.energyHistory)},
                                                {"warnings", warnings}};
@@ -164,10 +211,10 @@ int runRemesh(const std::vector<std::string>& args)
         for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", w.c_str());
         const QualityMetrics& m = result.metrics;
         std::printf("%s: %d vertices, %d faces, genus %d, %d boundary loops%s; Q_avg %.3f, theta_min %.1f deg, "
-                    "V6 %.1f %%, d_H %.3g %% of the diagonal; %d evaluations, %.2f s\n",
+                    "V6 %.1f %%, d_H %.3g %% of the diagonal, mean edge %.4g; %d evaluations, %.2f s\n",
                     outPath.c_str(), result.mesh.vertexCount(), result.mesh.faceCount(), outputTopology.genus,
                     outputTopology.boundaryLoops, outputTopology.manifold() ? "" : " (NOT MANIFOLD)", m.qAvg,
-                    m.thetaMin, m.v6Pct, 100 * m.dH, result.evaluations, totalSeconds);
+                    m.thetaMin, m.v6Pct, 100 * m.dH, meanEdge, result.evaluations, totalSeconds);
     }
     return 0;
 }

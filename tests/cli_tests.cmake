@@ -49,3 +49,9 @@ add_test(NAME cli_time_limit
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_time_limit.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off
           ${FCVT_CLI_WORK}/time_limit)
 set_tests_properties(cli_time_limit PROPERTIES LABELS "cli" TIMEOUT 300)
+
+# Size by edge length (issue 7 item 2): --target-length L gives a mean edge length within 15 % of L.
+add_test(NAME cli_target_length
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_target_length.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/torus.obj 0.08
+          ${FCVT_CLI_WORK}/target_length)
+set_tests_properties(cli_target_length PROPERTIES LABELS "cli" TIMEOUT 300)
