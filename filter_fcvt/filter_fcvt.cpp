@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "closest_point.h"
 #include "errors.h"
 #include "field_drawing.h"
 #include "mesh_check.h"
@@ -25,6 +26,50 @@ int defaultVertexCount(const MeshModel* m)
 {
     const int vn = m != nullptr ? m->cm.vn : kDefaultMaxVertices;
     return std::max(kMinVertices, std::min(vn, kDefaultMaxVertices));
+}
+
+// Bounding-box diagonal of the layer (1 without a mesh): the range of targetLength.
+float bboxDiagonal(const MeshModel* m)
+{
+    const float d = m != nullptr && !m->cm.bbox.IsNull() ? float(m->cm.bbox.Diag()) : 0.0f;
+    return std::isfinite(d) && d > 0 ? d : 1.0f;
+}
+
+// The sizeMode enum (index = value in .mlx scripts, frozen).
+enum SizeMode { kSizeByVertexCount = 0, kSizeByTargetLength = 1 };
+const QStringList kSizeModeLabels = {"vertex count", "target edge length"};
+
+// Above this a target edge length is taken for a mistake (hours of run time, gigabytes).
+constexpr double kMaxVerticesFromLength = 5e6;
+
+// Surface area of the live faces (coordinates as stored, like toTriMesh).
+double surfaceArea(const CMeshO& cm)
+{
+    double area = 0;
+    for (const CFaceO& f : cm.face) {
+        if (f.IsD())
+            continue;
+        const Point3m e1 = f.cP(1) - f.cP(0);
+        const Point3m e2 = f.cP(2) - f.cP(0);
+        area += 0.5 * double((e1 ^ e2).Norm());
+    }
+    return area;
+}
+
+// Mean length over the distinct (undirected) edges of the faces.
+double meanEdgeLength(const fieldcvt::TriMesh& mesh)
+{
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(mesh.faces.size() * 3);
+    for (const fieldcvt::Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k)
+            edges.emplace_back(std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    double sum = 0;
+    for (const auto& e : edges)
+        sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).norm();
+    return edges.empty() ? 0.0 : sum / double(edges.size());
 }
 
 // The fieldSource enum: index in the RichEnum (the value stored in .mlx scripts, frozen) ->
@@ -92,6 +137,56 @@ QString singularitySummary(const std::vector<fieldcvt::Singularity>& singulariti
 QString num(double v, int precision = 4)
 {
     return std::isfinite(v) ? QString::number(v, 'g', precision) : QString("n/a");
+}
+
+// What the output keeps of the input's per-vertex data.
+struct KeptData {
+    bool colour = false, quality = false, normals = false;
+    bool any() const { return colour || quality || normals; }
+};
+
+// Per-vertex colour / quality / normal of the input carried to the output: for each output
+// vertex the closest point on the input (`in`, whose vertex i is `inVerts[i]`) and barycentric
+// interpolation of its face's three corners. Normals are renormalised (a degenerate result keeps
+// the output's own normal).
+void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVertexO*>& inVerts,
+                        const KeptData& keep, CMeshO& out)
+{
+    if (!keep.any() || in.faces.empty())
+        return;
+    const fieldcvt::ClosestPointTree tree(in);
+    for (CVertexO& v : out.vert) {
+        if (v.IsD())
+            continue;
+        const fieldcvt::ClosestPoint cp = tree.closest(toVec3(v.cP()));
+        if (cp.face < 0)
+            continue;
+        const fieldcvt::Face& f = in.faces[size_t(cp.face)];
+        const CVertexO* c[3] = {inVerts[size_t(f[0])], inVerts[size_t(f[1])], inVerts[size_t(f[2])]};
+        const double w[3] = {cp.barycentric.x(), cp.barycentric.y(), cp.barycentric.z()};
+        if (keep.colour) {
+            for (int ch = 0; ch < 4; ++ch) {
+                double x = 0;
+                for (int k = 0; k < 3; ++k)
+                    x += w[k] * double(c[k]->cC()[ch]);
+                v.C()[ch] = static_cast<unsigned char>(std::clamp(std::lround(x), 0L, 255L));
+            }
+        }
+        if (keep.quality) {
+            double q = 0;
+            for (int k = 0; k < 3; ++k)
+                q += w[k] * double(c[k]->cQ());
+            v.Q() = static_cast<float>(q);
+        }
+        if (keep.normals) {
+            fieldcvt::Vec3 n(0, 0, 0);
+            for (int k = 0; k < 3; ++k)
+                n += w[k] * toVec3(c[k]->cN());
+            const double len = n.norm();
+            if (std::isfinite(len) && len > 1e-12)
+                v.N() = toPoint3m(n / len);
+        }
+    }
 }
 
 }  // namespace
@@ -187,15 +282,16 @@ int FilterFcvtPlugin::postCondition(QAction*) const
 
 void FilterFcvtPlugin::initParameterSet(QAction* a, MeshModel& m, RichParameterList& par)
 {
-    addParameters(a, defaultVertexCount(&m), par);
+    addParameters(a, defaultVertexCount(&m), bboxDiagonal(&m), par);
 }
 
 void FilterFcvtPlugin::initParameterSet(QAction* a, MeshDocument& md, RichParameterList& par)
 {
-    addParameters(a, defaultVertexCount(md.mm()), par);
+    addParameters(a, defaultVertexCount(md.mm()), bboxDiagonal(md.mm()), par);
 }
 
-void FilterFcvtPlugin::addParameters(QAction* a, int vertexCountDefault, RichParameterList& par)
+void FilterFcvtPlugin::addParameters(QAction* a, int vertexCountDefault, float bboxDiagonal,
+                                     RichParameterList& par)
 {
     switch (ID(a)) {
     case FP_FCVT_REMESH: {
@@ -220,6 +316,15 @@ void FilterFcvtPlugin::addParameters(QAction* a, int vertexCountDefault, RichPar
         par.addParam(RichInt(kSeed, int(defaults.seed), "Random seed",
                              "Seed of the initial sampling (>= 0); the same seed gives the same "
                              "output."));
+        par.addParam(RichEnum(kSizeMode, kSizeByVertexCount, kSizeModeLabels, "Size by",
+                              "How the output size is given: by the number of vertices (Target "
+                              "vertices) or by the edge length (Target edge length), converted to "
+                              "a vertex count through the surface area."));
+        par.addParam(RichAbsPerc(kTargetLength, 0.01f * bboxDiagonal, 0.0f, bboxDiagonal,
+                                 "Target edge length",
+                                 "Wanted edge length in world units (used when Size by is 'target "
+                                 "edge length'); the vertex count is about 2 * area / (sqrt(3) * "
+                                 "length^2). Default: 1% of the bounding-box diagonal."));
         break;
     }
     case FP_FCVT_FIELD: {
@@ -262,12 +367,40 @@ bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParam
 bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& par,
                                    vcg::CallBackPos* cb)
 {
-    const int vertexCount = par.getInt(kVertexCount);
+    int vertexCount = par.getInt(kVertexCount);
     const double lambda = par.getFloat(kLambda);
     const int cvtIterations = par.getInt(kCvtIterations);
     const int fcvtIterations = par.getInt(kFcvtIterations);
     const int fieldSource = par.getEnum(kFieldSource);
     const int seed = par.getInt(kSeed);
+    const int sizeMode = par.getEnum(kSizeMode);
+    const double targetLength = par.getAbsPerc(kTargetLength);
+    if (sizeMode != kSizeByVertexCount && sizeMode != kSizeByTargetLength)
+        return fail(QString("FCVT: sizeMode must be 0..1 (got %1)").arg(sizeMode));
+    if (sizeMode == kSizeByTargetLength) {
+        MeshModel* input = currentTriangleLayer(md);
+        if (input == nullptr)
+            return false;
+        if (!(targetLength > 0) || !std::isfinite(targetLength))
+            return fail(QString("FCVT: targetLength must be a number > 0 (got %1)").arg(targetLength));
+        const double area = surfaceArea(input->cm);
+        // Equilateral triangulation of edge L: about 2 faces per vertex of area sqrt(3) L^2 / 4.
+        const double wanted = 2.0 * area / (std::sqrt(3.0) * targetLength * targetLength);
+        if (!std::isfinite(wanted) || wanted > kMaxVerticesFromLength)
+            return fail(QString("FCVT: targetLength %1 on a surface of area %2 would give %3 "
+                                "vertices, more than the maximum %4; choose a longer edge")
+                            .arg(targetLength)
+                            .arg(area)
+                            .arg(wanted, 0, 'g', 4)
+                            .arg(kMaxVerticesFromLength, 0, 'g', 4));
+        const int fromLength = std::max(kMinVertices, int(std::lround(wanted)));
+        Log(QString("FCVT size: target edge length %1 on area %2 -> %3 vertices")
+                .arg(targetLength)
+                .arg(area)
+                .arg(fromLength)
+                .toStdString());
+        vertexCount = fromLength;
+    }
     if (vertexCount < kMinVertices)
         return fail(QString("FCVT: vertexCount must be at least %1 (got %2)")
                         .arg(kMinVertices)
@@ -392,6 +525,32 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
         }
         output->cm.Tr = input->cm.Tr;
         output->UpdateBoxAndNormals();
+        KeptData keep;
+        keep.colour = input->hasDataMask(MeshModel::MM_VERTCOLOR);
+        keep.quality = input->hasDataMask(MeshModel::MM_VERTQUALITY);
+        keep.normals = input->hasDataMask(MeshModel::MM_VERTNORMAL);
+        int mask = 0;
+        if (keep.colour)
+            mask |= MeshModel::MM_VERTCOLOR;
+        if (keep.quality)
+            mask |= MeshModel::MM_VERTQUALITY;
+        if (mask != 0)
+            output->updateDataMask(mask);
+        // Vertex i of `in` is the i-th live vertex of the input layer (toTriMesh's order).
+        std::vector<const CVertexO*> inVerts;
+        inVerts.reserve(in.vertices.size());
+        for (const CVertexO& v : input->cm.vert)
+            if (!v.IsD())
+                inVerts.push_back(&v);
+        if (inVerts.size() != in.vertices.size())
+            throw fieldcvt::Error("input vertex count changed during the filter");
+        transferVertexData(in, inVerts, keep, output->cm);
+        if (keep.colour || keep.quality)
+            Log(QString("FCVT: per-vertex %1 of '%2' transferred to the output by closest point")
+                    .arg(keep.colour && keep.quality ? "colour and quality"
+                                                     : keep.colour ? "colour" : "quality")
+                    .arg(input->label())
+                    .toStdString());
     } catch (...) {
         md.delMesh(output);
         md.setCurrentMesh(input->id());
@@ -400,6 +559,10 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     if (cb != nullptr)
         cb(100, "FCVT done");
     logReport(result, output->label());
+    Log(QString("FCVT size: mean edge length %1 (%2 vertices)")
+            .arg(num(meanEdgeLength(result.mesh)))
+            .arg(result.mesh.vertexCount())
+            .toStdString());
     if (result.outputDirections.empty())
         Log("FCVT field: none (lambda = 0 or no FCVT iterations)");
     else

@@ -39,13 +39,15 @@ public:
     static constexpr const char* kFcvtIterations = "fcvtIterations";
     static constexpr const char* kFieldSource = "fieldSource";
     static constexpr const char* kSeed = "seed";
+    static constexpr const char* kSizeMode = "sizeMode";
+    static constexpr const char* kTargetLength = "targetLength";
     //! Name of the per-vertex Point3m attribute that holds a 6-RoSy field (representative d).
     static constexpr const char* kRosyAttribute = "rosy";
     //! Label of the layer "Compute 6-RoSy Field" adds (MeshLab appends "(1)", ... if taken).
     static constexpr const char* kFieldLayerLabel = "6-RoSy field";
 
 private:
-    void addParameters(QAction* a, int vertexCountDefault, RichParameterList& par);
+    void addParameters(QAction* a, int vertexCountDefault, float bboxDiagonal, RichParameterList& par);
     //! Parameters -> typed arguments, then the typed body of each filter.
     bool applyRemesh(MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
     bool applyField(MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);

@@ -36,6 +36,9 @@ add_test(NAME meshlab_missing_rosy
 add_test(NAME meshlab_field_then_remesh
   COMMAND bash "${_fcvt_ml_dir}/field_then_remesh.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/field_then_remesh")
+add_test(NAME meshlab_colour_transfer
+  COMMAND bash "${_fcvt_ml_dir}/colour_transfer.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/colour_transfer")
 set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_parameter
-  meshlab_field_torus meshlab_missing_rosy meshlab_field_then_remesh
+  meshlab_field_torus meshlab_missing_rosy meshlab_field_then_remesh meshlab_colour_transfer
   PROPERTIES LABELS meshlab TIMEOUT 600)

@@ -25,7 +25,8 @@ import xml.etree.ElementTree as ET
 dump_path, resources = sys.argv[1], sys.argv[2]
 frozen = {  # filter name -> parameter names, in declaration order (frozen API)
     "Remeshing: Field-Aligned CVT (FCVT)":
-        ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed"],
+        ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed",
+         "sizeMode", "targetLength"],
     "Compute 6-RoSy Field": ["fieldSource", "seed"],
 }
 declared, current = {}, None
