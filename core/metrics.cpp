@@ -123,9 +123,8 @@ VertexCorners buildVertexCorners(const TriMesh& mesh)
     return vc;
 }
 
-//! Half-edge origin and destination.
+//! Half-edge origin.
 inline int halfEdgeFrom(const TriMesh& mesh, int h) { return mesh.faces[h / 3][h % 3]; }
-inline int halfEdgeTo(const TriMesh& mesh, int h) { return mesh.faces[h / 3][(h % 3 + 1) % 3]; }
 
 //! Uniform double in [0, 1) from the top 53 bits; std::uniform_real_distribution is
 //! implementation-defined, which would make the samples differ between standard libraries.
