@@ -56,4 +56,13 @@ double secondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+const std::vector<std::string>& fileArguments(const Arguments& a, size_t count, const std::string& command,
+                                              const std::string& what)
+{
+    if (a.positional().size() != count)
+        throw UsageError(command + " needs " + what + ", got " + std::to_string(a.positional().size()) +
+                         " file arguments (try 'fcvt " + command + " --help')");
+    return a.positional();
+}
+
 }  // namespace fieldcvt::cli

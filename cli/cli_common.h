@@ -30,4 +30,9 @@ const std::vector<Vec3>& userField(const std::string& path, const VertexAttribut
 
 double secondsSince(std::chrono::steady_clock::time_point start);
 
+//! The command's file arguments, which must be exactly `count` (described as `what`, e.g. "an
+//! input and an output file"); otherwise a UsageError naming the command's --help.
+const std::vector<std::string>& fileArguments(const Arguments& a, size_t count, const std::string& command,
+                                              const std::string& what);
+
 }  // namespace fieldcvt::cli

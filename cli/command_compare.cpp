@@ -120,11 +120,8 @@ int runCompare(const std::vector<std::string>& args)
         printUsage();
         return 0;
     }
-    if (a.positional().size() != 1)
-        throw UsageError("compare needs exactly one input file, got " + std::to_string(a.positional().size()) +
-                         " (try 'fcvt compare --help')");
+    const std::string& inPath = fileArguments(a, 1, "compare", "exactly one input file")[0];
     if (!a.has("vertices")) throw UsageError("compare needs --vertices N (the target vertex count)");
-    const std::string& inPath = a.positional()[0];
     RemeshParams fcvt;
     fcvt.vertexCount = static_cast<int>(a.integer("vertices", fcvt.vertexCount, 4, INT_MAX));
     fcvt.seed = a.unsignedInteger("seed", fcvt.seed);

@@ -49,11 +49,9 @@ int runField(const std::vector<std::string>& args)
         printUsage();
         return 0;
     }
-    if (a.positional().size() != 2)
-        throw UsageError("field needs an input and an output file, got " + std::to_string(a.positional().size()) +
-                         " file arguments (try 'fcvt field --help')");
-    const std::string& inPath = a.positional()[0];
-    const std::string& outPath = a.positional()[1];
+    const std::vector<std::string>& files = fileArguments(a, 2, "field", "an input and an output file");
+    const std::string& inPath = files[0];
+    const std::string& outPath = files[1];
     FieldParams params;
     params.source = fieldOption(a, params.source, true);
     params.seed = a.unsignedInteger("seed", params.seed);

@@ -1,5 +1,6 @@
 // `fcvt metrics MESH [--ref INPUT] [--json]`: the paper's Table 2 figures of a mesh file.
 #include "arguments.h"
+#include "cli_common.h"
 #include "commands.h"
 #include "report.h"
 
@@ -49,10 +50,7 @@ int runMetrics(const std::vector<std::string>& args)
         printUsage();
         return 0;
     }
-    if (a.positional().size() != 1)
-        throw UsageError("metrics needs exactly one mesh file, got " + std::to_string(a.positional().size()) +
-                         " (try 'fcvt metrics --help')");
-    const std::string& path = a.positional()[0];
+    const std::string& path = fileArguments(a, 1, "metrics", "exactly one mesh file")[0];
     const TriMesh mesh = readMesh(path);
     QualityMetrics quality = computeQuality(mesh);
     if (auto ref = a.text("ref")) {

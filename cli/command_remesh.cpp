@@ -126,11 +126,9 @@ int runRemesh(const std::vector<std::string>& args)
         printUsage();
         return 0;
     }
-    if (a.positional().size() != 2)
-        throw UsageError("remesh needs an input and an output file, got " + std::to_string(a.positional().size()) +
-                         " file arguments (try 'fcvt remesh --help')");
-    const std::string& inPath = a.positional()[0];
-    const std::string& outPath = a.positional()[1];
+    const std::vector<std::string>& files = fileArguments(a, 2, "remesh", "an input and an output file");
+    const std::string& inPath = files[0];
+    const std::string& outPath = files[1];
     RemeshParams params = paramsFrom(a);
     // Checked before reading the input (a usage error); applied once the area is known.
     const double targetLength = a.number("target-length", 0.0, 0.0);

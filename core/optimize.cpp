@@ -22,17 +22,14 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
         x = flatten(seeds);
         energy.evaluate(x, gradient);
         const RvdResult& rvd = energy.lastDiagram();
-        int relocated = 0;
         for (size_t i = 0; i < seeds.size(); ++i) {
             if (rvd.mass[i] > 0) {
                 seeds[i] = rvd.moment[i] / rvd.mass[i];
             } else {
                 // A lost seed (empty cell): put it back on the surface at a random place.
                 seeds[i] = sampleSurfaceUniform(surface, 1, rng())[0];
-                ++relocated;
             }
         }
-        (void)relocated;
     }
 }
 

@@ -49,8 +49,7 @@ struct Normalisation {
 // Runs the stages in order, timing each and reporting overall progress.
 class Pipeline {
 public:
-    Pipeline(const RemeshParams& params, const Progress& progress, RemeshResult& result)
-        : params_(params), progress_(progress), result_(result)
+    Pipeline(const Progress& progress, RemeshResult& result) : progress_(progress), result_(result)
     {
     }
 
@@ -75,7 +74,6 @@ public:
     }
 
 private:
-    const RemeshParams& params_;
     const Progress& progress_;
     RemeshResult& result_;
     double percent_ = 0;
@@ -95,7 +93,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     if (params.threads > 0) omp_set_num_threads(params.threads);
 
     RemeshResult result;
-    Pipeline pipeline(params, progress, result);
+    Pipeline pipeline(progress, result);
 
     TriMesh surface;
     std::vector<int> cleanIndex;  // input vertex -> surface vertex
