@@ -4,13 +4,18 @@
 #include "field.h"
 #include "metrics.h"
 #include "progress.h"
+#include "valence.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace fieldcvt {
+
+//! Where the sample density ρ of eq. 1 comes from (adaptive remeshing).
+enum class DensitySource { Uniform, Curvature, PerVertex };
 
 struct RemeshParams {
     int vertexCount = 5000;  //!< target number of output vertices (samples), >= 4
@@ -35,6 +40,22 @@ struct RemeshParams {
     //! runs out, the output is made from the best samples so far and a warning says so.
     double timeLimitSeconds = 0;
     bool computeDistances = true;  //!< also compute d_RMS / d_H against the input in the report
+    //! §4.4: after the RDT, flips / collapses / splits that lower Σ(d(v) − o(v))², then a
+    //! relaxation on the fixed connectivity (valence.h).
+    bool valenceOptimization = true;
+    ValenceParams valence;
+    //! Sharp features: input edges whose dihedral angle (between face normals) is at least this
+    //! many degrees are feature lines; 0 = off.
+    double featureAngleDegrees = 0;
+    //! Feature edges chosen by the user (pairs of input vertex indices, e.g. MeshLab's selection),
+    //! in addition to the dihedral ones.
+    std::vector<std::array<int, 2>> featureEdges;
+    //! Sample density ρ (eq. 1): uniform, from curvature, or one value per input vertex.
+    DensitySource density = DensitySource::Uniform;
+    //! DensitySource::Curvature: how strongly curvature raises the density (0 = uniform).
+    double gradation = 1.0;
+    //! DensitySource::PerVertex: one value > 0 per input vertex (e.g. MeshLab's vertex quality).
+    std::vector<double> vertexDensity;
 };
 
 //! Energies after one L-BFGS step (an evaluation that lowered E_tot) or one Lloyd step.
@@ -63,6 +84,7 @@ struct RemeshResult {
     //! The field interpolated at the output vertices (empty for a pure CVT without a field).
     std::vector<Vec3> outputNormals, outputDirections;
     std::vector<Singularity> singularities;  //!< of the input's field, positions in input units
+    ValenceStats valence;                    //!< V6% before / after valence optimisation, operations done
 };
 
 //! Remeshes `input` (validated first; throws InvalidInputError with a clear message).
