@@ -43,16 +43,26 @@ void printUsage()
         "  --lambda L            weight of the field-alignment term, >= 0; 0 = pure CVT (default %g)\n"
         "  --cvt-iterations A    L-BFGS iterations on the CVT energy, >= 0 (default %d)\n"
         "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d)\n"
+        "  --no-valence          skip the valence optimisation (flips, collapses, splits towards valence\n"
+        "                        6, 4 on boundaries, then a relaxation; on by default)\n"
+        "  --feature-angle DEG   input edges with a dihedral angle >= DEG degrees are sharp features the\n"
+        "                        output follows, 0..180 (default %g: off)\n"
+        "  --adaptive D          sample density: none (uniform) or curvature (more vertices where the\n"
+        "                        surface bends; same vertex count) (default none)\n"
+        "  --gradation G         with --adaptive curvature: how strongly curvature raises the density,\n"
+        "                        >= 0, 0 = uniform (default %g)\n"
         "  --seed S              seed of the sampling and the field, >= 0 (default %llu); same seed, same output\n"
         "  --threads T           OpenMP threads, >= 0 (default %d: all cores); output does not depend on it\n"
         "  --time-limit SEC      stop optimising after SEC seconds and write the best result so far,\n"
         "                        with a warning (default 0: no limit)\n"
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
-        "                        history, field singularities, warnings\n"
-        "  --quiet               print nothing but errors\n"
+        "                        history, field singularities, valence optimisation, warnings\n"
+        "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
+        "                        on stderr otherwise)\n"
         "  -h, --help            show this help\n",
         fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.cvtIterations,
-        defaults.fcvtIterations, static_cast<unsigned long long>(defaults.seed), defaults.threads);
+        defaults.fcvtIterations, defaults.featureAngleDegrees, defaults.gradation,
+        static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
 // Above this a --target-length is taken for a mistake (hours of run time, gigabytes).
@@ -99,6 +109,18 @@ RemeshParams paramsFrom(const Arguments& a)
     p.seed = a.unsignedInteger("seed", p.seed);
     p.threads = static_cast<int>(a.integer("threads", p.threads, 0, 4096));
     p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds, 0.0);
+    p.valenceOptimization = !a.flag("no-valence");
+    p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees, 0.0);
+    if (p.featureAngleDegrees > 180)
+        throw UsageError("--feature-angle must be 0..180 degrees (0 = off), got " + *a.text("feature-angle"));
+    if (const auto adaptive = a.text("adaptive")) {
+        if (*adaptive == "curvature") p.density = DensitySource::Curvature;
+        else if (*adaptive == "none") p.density = DensitySource::Uniform;
+        else throw UsageError("--adaptive must be 'curvature' or 'none', got '" + *adaptive + "'");
+    }
+    if (a.has("gradation") && p.density != DensitySource::Curvature)
+        throw UsageError("--gradation applies to --adaptive curvature only");
+    p.gradation = a.number("gradation", p.gradation, 0.0);
     return p;
 }
 
@@ -112,7 +134,11 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"fcvt_iterations", p.fcvtIterations},
             {"seed", p.seed},
             {"threads", p.threads},
-            {"time_limit_s", p.timeLimitSeconds}};
+            {"time_limit_s", p.timeLimitSeconds},
+            {"valence_optimization", p.valenceOptimization},
+            {"feature_angle", p.featureAngleDegrees},
+            {"adaptive", p.density == DensitySource::Curvature ? "curvature" : "none"},
+            {"gradation", p.gradation}};
 }
 
 }  // namespace
@@ -120,8 +146,9 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
 int runRemesh(const std::vector<std::string>& args)
 {
     const Arguments a(args,
-                      {"vertices", "target-length", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads", "time-limit", "report"},
-                      {"quiet", "help"});
+                      {"vertices", "target-length", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads",
+                       "time-limit", "report", "feature-angle", "adaptive", "gradation"},
+                      {"quiet", "help", "no-valence"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -200,6 +227,7 @@ int runRemesh(const std::vector<std::string>& args)
                                                {"output", topologyJson(outputTopology)},
                                                {"params", paramsOut},
                                                {"field", field},
+                                               {"valence", valenceJson(params.valenceOptimization, result.valence)},
                                                {"energy_history", energyHistoryJson(result.energyHistory)},
                                                {"warnings", warnings}};
         writeJsonFile(*reportPath, report);

@@ -1,6 +1,7 @@
 #include "progress_printer.h"
 
 #include <cstdio>
+#include <string>
 #include <unistd.h>
 
 namespace fieldcvt::cli {
@@ -25,8 +26,11 @@ void ProgressPrinter::report(const std::string& stage, double percent)
         const int tenths = static_cast<int>(percent * 10);
         if (!newStage && tenths == shown_) return;
         shown_ = tenths;
-        // \33[K clears what a longer previous stage name left on the line.
-        std::fprintf(stderr, "\rfcvt: %-10s %5.1f %%\33[K", stage.c_str(), percent);
+        // A bar of kBarWidth cells; \33[K clears what a longer previous stage name left on the line.
+        constexpr int kBarWidth = 30;
+        const int filled = static_cast<int>(percent / 100 * kBarWidth + 0.5);
+        const std::string bar = std::string(static_cast<size_t>(filled), '#') + std::string(static_cast<size_t>(kBarWidth - filled), '-');
+        std::fprintf(stderr, "\rfcvt: [%s] %5.1f %% %s\33[K", bar.c_str(), percent, stage.c_str());
         lineOpen_ = true;
     } else {
         const int tens = static_cast<int>(percent / 10) * 10;

@@ -1,6 +1,7 @@
 #pragma once
-// Progress of a long run on stderr: one line rewritten in place on a terminal, plain lines (one
-// per stage change and every 10 %) when stderr is a file or a pipe, nothing with --quiet.
+// Progress of a long run on stderr: on a terminal one line rewritten in place (a bar, the percent and
+// the stage), plain lines (one per stage change and every 10 %) when stderr is a file or a pipe,
+// nothing with --quiet.
 #include "progress.h"
 
 #include <mutex>

@@ -62,6 +62,19 @@ nlohmann::ordered_json fieldJson(FieldSource source, const std::vector<Singulari
             {"singularity_positions", positions}};
 }
 
+nlohmann::ordered_json valenceJson(bool enabled, const ValenceStats& v)
+{
+    return {{"enabled", enabled},
+            {"v6_before", numberOrNull(v.v6Before)},
+            {"v6_after", numberOrNull(v.v6After)},
+            {"flips", v.flips},
+            {"collapses", v.collapses},
+            {"splits", v.splits},
+            {"rounds", v.rounds},
+            {"irregularity_before", v.irregularityBefore},
+            {"irregularity_after", v.irregularityAfter}};
+}
+
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json)
 {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);

@@ -25,6 +25,10 @@ nlohmann::ordered_json energyHistoryJson(const std::vector<EnergyRecord>& histor
 nlohmann::ordered_json fieldJson(FieldSource source, const std::vector<Singularity>& singularities,
                                  std::size_t maxPositions = 1000);
 
+//! "enabled", "v6_before", "v6_after" (% of interior vertices of valence 6 around the valence
+//! optimisation), "flips", "collapses", "splits", "rounds", "irregularity_before", "irregularity_after".
+nlohmann::ordered_json valenceJson(bool enabled, const ValenceStats& stats);
+
 //! Writes `json` (indented, trailing newline) to `path`; throws IOError on failure.
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json);
 

@@ -55,3 +55,19 @@ add_test(NAME cli_target_length
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_target_length.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/torus.obj 0.08
           ${FCVT_CLI_WORK}/target_length)
 set_tests_properties(cli_target_length PROPERTIES LABELS "cli" TIMEOUT 300)
+
+# Issue 5 options of `fcvt remesh` (wiring: range errors, report keys).
+add_test(NAME cli_remesh_options
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_remesh_options.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}
+          ${FCVT_CLI_WORK}/remesh_options)
+set_tests_properties(cli_remesh_options PROPERTIES LABELS "cli" TIMEOUT 600)
+
+# `fcvt compare` with MeshLab's built-in isotropic remeshing (issue 7 item 3), when the system
+# meshlabserver and xvfb-run are there.
+find_program(FCVT_CLI_XVFB_RUN xvfb-run)
+if(FCVT_CLI_XVFB_RUN AND EXISTS /usr/bin/meshlabserver)
+  add_test(NAME cli_compare_meshlab
+    COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_compare_meshlab.py $<TARGET_FILE:fcvt> /usr/bin/meshlabserver
+            ${FCVT_RESOURCES}/torus.obj 600)
+  set_tests_properties(cli_compare_meshlab PROPERTIES LABELS "cli;meshlab" TIMEOUT 900)
+endif()
