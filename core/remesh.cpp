@@ -9,6 +9,8 @@
 #include "rdt.h"
 #include "sampling.h"
 #include "boundary.h"
+#include "feature_lines.h"
+#include "valence.h"
 
 #include <omp.h>
 
@@ -35,6 +37,36 @@ void validate(const RemeshParams& p)
         throw InvalidInputError("iteration counts must be >= 0");
     if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
     if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds)) throw InvalidInputError("time limit must be >= 0 seconds");
+    if (!(p.featureAngleDegrees >= 0 && p.featureAngleDegrees <= 180))
+        throw InvalidInputError("feature angle must be between 0 and 180 degrees (0 = no sharp features)");
+    if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0)
+        throw InvalidInputError("valence optimisation step counts must be >= 0");
+}
+
+// The user's feature edges, from input vertex indices to the cleaned surface's.
+std::vector<std::array<int, 2>> featureEdgesOnSurface(const std::vector<std::array<int, 2>>& edges,
+                                                     const std::vector<int>& cleanIndex)
+{
+    std::vector<std::array<int, 2>> mapped;
+    for (const auto& [a, b] : edges) {
+        if (a < 0 || b < 0 || size_t(a) >= cleanIndex.size() || size_t(b) >= cleanIndex.size())
+            throw InvalidInputError("feature edge (" + std::to_string(a) + ", " + std::to_string(b) +
+                                    ") names a vertex the input does not have");
+        if (cleanIndex[size_t(a)] >= 0 && cleanIndex[size_t(b)] >= 0 && cleanIndex[size_t(a)] != cleanIndex[size_t(b)])
+            mapped.push_back({cleanIndex[size_t(a)], cleanIndex[size_t(b)]});
+    }
+    return mapped;
+}
+
+VertexRole roleOf(SampleConstraint c)
+{
+    switch (c) {
+    case SampleConstraint::Border: return VertexRole::Boundary;
+    case SampleConstraint::Feature: return VertexRole::Feature;
+    case SampleConstraint::Corner: return VertexRole::Corner;
+    case SampleConstraint::Free: break;
+    }
+    return VertexRole::Free;
 }
 
 // The working frame (§5): centred, and scaled so that the mean restricted Voronoi cell has
@@ -117,8 +149,17 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     // the CVT iterations would cost a closest-point query per sample and evaluation).
     const bool useField = params.fcvtIterations > 0 && params.lambda > 0;
     const std::vector<Segment> border = boundarySegments(surface);
+    FeatureLines features;
+    if (params.featureAngleDegrees > 0 || !params.featureEdges.empty()) {
+        int ignored = 0;
+        features = detectFeatures(surface, params.featureAngleDegrees, featureEdgesOnSurface(params.featureEdges, cleanIndex),
+                                  &ignored);
+        if (ignored > 0)
+            result.warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
+    }
+    const bool constrained = !border.empty() || !features.empty();
     const double expectedEvaluations = params.lloydIterations + 1.1 * (params.cvtIterations + params.fcvtIterations) +
-                                       (border.empty() ? 0 : params.boundaryIterations) + 2;
+                                       (constrained ? params.boundaryIterations : 0) + 2;
     EnergyFunction energy(surface);
     ClosestPointTree tree(surface);
     DirectionField field;
@@ -152,6 +193,8 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                 FieldParams fieldParams;
                 fieldParams.source = params.fieldSource;
                 fieldParams.seed = params.seed;
+                // The field follows the same creases the samples are snapped to (§5).
+                if (params.featureAngleDegrees > 0) fieldParams.sharpAngle = params.featureAngleDegrees;
                 field = computeField(surface, fieldParams);
             }
             result.singularities = findSingularities(surface, field);
@@ -160,6 +203,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     }
 
     std::vector<Vec3> seeds;
+    std::vector<SampleConstraint> sampleRoles;
     pipeline.run("sampling", [&] { seeds = sampleSurfaceUniform(surface, params.vertexCount, params.seed); });
     auto lbfgs = [&](int iterations) {
         OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{iterations});
@@ -175,9 +219,13 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             best = std::numeric_limits<double>::infinity();
             lbfgs(params.cvtIterations);
         });
-        pipeline.run("boundary", [&] {
-            stage = "boundary";
-            energy.setFrozen(relaxBoundarySamples(energy, seeds, border, params.boundaryIterations));
+        // Second stage of §5: samples on the border and on feature lines, held there from now on.
+        pipeline.run("features", [&] {
+            stage = "features";
+            sampleRoles = relaxConstrainedSamples(energy, seeds, surface, border, features, params.boundaryIterations);
+            std::vector<char> frozen(seeds.size(), 0);
+            for (size_t i = 0; i < seeds.size(); ++i) frozen[i] = sampleRoles[i] != SampleConstraint::Free;
+            energy.setFrozen(std::move(frozen));
         });
         if (params.fcvtIterations > 0) {
             pipeline.run("fcvt", [&] {
@@ -194,6 +242,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         result.warnings.push_back(message.str());
     }
 
+    std::vector<VertexRole> roles;  // per output vertex, for the valence optimisation
     pipeline.run("rdt", [&] {
         stage = "rdt";
         pipeline.report(stage, 90);
@@ -206,13 +255,23 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         if (result.mesh.faces.empty())
             throw SolverError("no restricted Delaunay triangle survives with " + std::to_string(params.vertexCount) +
                               " samples on this surface: use more vertices");
-        if (useField) {
-            const FieldFrames frames = energy.framesAt(result.mesh.vertices);
-            result.outputNormals = frames.normals;
-            result.outputDirections = frames.directions;
-        }
-        for (Vec3& p : result.mesh.vertices) p = frame.fromWork(p);
+        for (int seed : rdt.seedOfVertex)
+            roles.push_back(size_t(seed) < sampleRoles.size() ? roleOf(sampleRoles[size_t(seed)]) : VertexRole::Free);
     });
+    if (params.valenceOptimization) {
+        pipeline.run("valence", [&] {
+            stage = "valence";
+            pipeline.report(stage, 92);
+            const ValenceSurface on{surface, tree, border, features.segments, useField ? &field : nullptr};
+            (void)on;  // TEMPORARY until core/valence.cpp lands: result.valence = optimizeValence(result.mesh, roles, on, params.valence);
+        });
+    }
+    if (useField) {
+        const FieldFrames frames = energy.framesAt(result.mesh.vertices);
+        result.outputNormals = frames.normals;
+        result.outputDirections = frames.directions;
+    }
+    for (Vec3& p : result.mesh.vertices) p = frame.fromWork(p);
     result.evaluations = energy.evaluations();
 
     pipeline.run("metrics", [&] {

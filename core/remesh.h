@@ -27,9 +27,11 @@ struct RemeshParams {
     int lloydIterations = 30;
     int cvtIterations = 65;   //!< L-BFGS iterations on E_CVT (§5: 65, or 130 for a pure CVT)
     int fcvtIterations = 65;  //!< then L-BFGS iterations on E_CVT + λ E_field (§5: 65)
-    //! Open surfaces: Lloyd steps after the CVT iterations that put the samples of border cells
-    //! on the border (1D CVT along it), so the output's boundary follows the input's. Those
-    //! samples then stay fixed during the FCVT iterations.
+    //! Open surfaces and sharp features (the second stage of §5): Lloyd steps after the CVT
+    //! iterations that put the samples of cells meeting the input's border or a feature line on
+    //! it (a 1D CVT along the curve) and one sample on each feature corner, so the output's
+    //! boundary and creases follow the input's. Those samples stay fixed during the FCVT
+    //! iterations.
     int boundaryIterations = 10;
     FieldSource fieldSource = FieldSource::Extrinsic;  //!< the 6-RoSy field E_field aligns to
     //! FieldSource::User: one vector per input vertex (projected on the tangent plane).
