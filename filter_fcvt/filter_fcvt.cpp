@@ -3,9 +3,11 @@
 #include <vcg/complex/allocate.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,8 @@
 #include "field_drawing.h"
 #include "mesh_check.h"
 #include "mesh_convert.h"
+#include "metrics.h"
+#include "valence_colour.h"
 
 namespace {
 
@@ -139,6 +143,101 @@ QString num(double v, int precision = 4)
     return std::isfinite(v) ? QString::number(v, 'g', precision) : QString("n/a");
 }
 
+// The core's stage names as the status bar shows them.
+QString stageLabel(const std::string& stage)
+{
+    static const std::map<std::string, const char*> labels = {
+        {"prepare", "checking the input"},
+        {"field", "computing the 6-RoSy field"},
+        {"sampling", "sampling"},
+        {"lloyd", "Lloyd warm-up"},
+        {"cvt", "CVT iterations"},
+        {"boundary", "placing samples on the boundary"},
+        {"features", "placing samples on feature lines"},
+        {"fcvt", "FCVT iterations"},
+        {"rdt", "extracting the mesh"},
+        {"valence", "valence optimisation"},
+        {"metrics", "measuring quality"},
+        {"done", "done"},
+    };
+    const auto it = labels.find(stage);
+    return QString("FCVT: ") + (it != labels.end() ? QString(it->second) : QString::fromStdString(stage));
+}
+
+// The Table 2 figures of computeQuality as one log line (distances apart).
+QString qualityText(const fieldcvt::QualityMetrics& m)
+{
+    return QString("Q_min %1, Q_avg %2, theta_min %3 deg, mean theta_min %4 deg, theta_max %5 deg, "
+                   "%theta<30 %6, %theta>90 %7, V6% %8")
+        .arg(num(m.qMin))
+        .arg(num(m.qAvg))
+        .arg(num(m.thetaMin))
+        .arg(num(m.thetaMinAvg))
+        .arg(num(m.thetaMax))
+        .arg(num(m.pctLt30))
+        .arg(num(m.pctGt90))
+        .arg(num(m.v6Pct));
+}
+
+QString topologyText(const fieldcvt::TopologySummary& t)
+{
+    return QString("genus %1, %2 boundary loops, %3 components%4")
+        .arg(t.genus)
+        .arg(t.boundaryLoops)
+        .arg(t.components)
+        .arg(t.manifold() ? "" : ", NON-MANIFOLD");
+}
+
+// Distance samples per mesh: dense enough for a Hausdorff figure at the meshes' resolution,
+// capped for big ones (the core's choice in remesh()).
+int distanceSamples(const fieldcvt::TriMesh& a, const fieldcvt::TriMesh& b)
+{
+    return std::clamp(20 * (a.faceCount() + b.faceCount()), 20000, 200000);
+}
+
+// Writes the valence colours to the live vertices of `cm` (vertex i of `mesh` = i-th live vertex)
+// and returns the counts as a log line.
+QString applyValenceColours(const fieldcvt::TriMesh& mesh, MeshModel& layer)
+{
+    const fcvt_plugin::ValenceColouring c = fcvt_plugin::colourByValence(mesh);
+    layer.updateDataMask(MeshModel::MM_VERTCOLOR);
+    size_t i = 0;
+    for (CVertexO& v : layer.cm.vert)
+        if (!v.IsD() && i < c.colours.size())
+            v.C() = c.colours[i++];
+    if (i != c.colours.size())
+        throw fieldcvt::Error("valence colours: vertex count mismatch");
+    return QString("interior vertices: %1 of valence < 6 (blue), %2 = 6 (white), %3 > 6 (pink); "
+                   "boundary vertices (target 4): %4 < 4 (blue), %5 = 4 (white), %6 > 4 (pink)%7")
+        .arg(c.interiorLow)
+        .arg(c.interiorRegular)
+        .arg(c.interiorHigh)
+        .arg(c.boundaryLow)
+        .arg(c.boundaryRegular)
+        .arg(c.boundaryHigh)
+        .arg(c.unused > 0 ? QString("; %1 vertices on no face (grey)").arg(c.unused) : QString());
+}
+
+// Feature lines from a face selection: the edges between a selected and an unselected face
+// (vertex indices of `mesh`, whose face i is the i-th live face, `selected[i]` its flag).
+std::vector<std::array<int, 2>> selectionBorder(const fieldcvt::TriMesh& mesh,
+                                                const std::vector<char>& selected)
+{
+    std::map<std::pair<int, int>, std::pair<int, int>> edges;  // edge -> (faces, selected faces)
+    for (size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+            auto& count = edges[{std::min(a, b), std::max(a, b)}];
+            ++count.first;
+            count.second += selected[f] ? 1 : 0;
+        }
+    std::vector<std::array<int, 2>> border;
+    for (const auto& [edge, count] : edges)
+        if (count.second > 0 && count.second < count.first)
+            border.push_back({edge.first, edge.second});
+    return border;
+}
+
 // What the output keeps of the input's per-vertex data.
 struct KeptData {
     bool colour = false, quality = false, normals = false;
@@ -193,7 +292,7 @@ void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVe
 
 FilterFcvtPlugin::FilterFcvtPlugin()
 {
-    typeList << FP_FCVT_REMESH << FP_FCVT_FIELD;
+    typeList << FP_FCVT_REMESH << FP_FCVT_FIELD << FP_FCVT_QUALITY;
     for (FilterIDType tt : types())
         actionList << new QAction(filterName(tt), this);
 }
@@ -211,6 +310,8 @@ QString FilterFcvtPlugin::filterName(FilterIDType filter) const
         return "Remeshing: Field-Aligned CVT (FCVT)";
     case FP_FCVT_FIELD:
         return "Compute 6-RoSy Field";
+    case FP_FCVT_QUALITY:
+        return "Remeshing Quality Report (FCVT)";
     default:
         return QString();
     }
@@ -241,6 +342,20 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "number of singularities, and adds a layer \"6-RoSy field\" that draws the six "
                "directions at each vertex (a uniform subset on meshes over 20000 vertices) as "
                "line segments. The geometry of the current mesh is unchanged.";
+    case FP_FCVT_QUALITY:
+        return "Writes the remeshing quality figures of the current mesh to the log, as in Table 2 "
+               "of <b>\"Field-Aligned Isotropic Surface Remeshing\"</b>: Q_min and Q_avg (triangle "
+               "quality 2&radic;3&middot;area / (half-perimeter &middot; longest edge), 1 for an "
+               "equilateral triangle), the smallest angle, the mean smallest angle, the largest "
+               "angle, the % of triangles with an angle below 30&deg; or above 90&deg;, V6% (interior "
+               "vertices of valence 6), and the topology (genus, boundary loops, components). "
+               "Given a reference layer other than the current one (e.g. the input of a remeshing), "
+               "also d_RMS and d_H, the symmetric RMS and Hausdorff distances as fractions of the "
+               "reference's bounding-box diagonal.<br>"
+               "Optionally colours the vertices by valence: interior vertices of valence &lt; 6 blue, "
+               "&gt; 6 pink, 6 white; vertices on an open boundary are judged against valence 4 "
+               "(the target of the valence optimisation): &lt; 4 blue, &gt; 4 pink, 4 white. "
+               "The geometry is unchanged.";
     default:
         return QString();
     }
@@ -253,6 +368,8 @@ MeshFilterInterface::FilterClass FilterFcvtPlugin::getClass(QAction* a)
         return MeshFilterInterface::Remeshing;
     case FP_FCVT_FIELD:
         return MeshFilterInterface::Normal;
+    case FP_FCVT_QUALITY:
+        return FilterClass(MeshFilterInterface::Measure | MeshFilterInterface::VertexColoring);
     default:
         return MeshFilterInterface::Generic;
     }
@@ -273,26 +390,28 @@ int FilterFcvtPlugin::getPreConditions(QAction*) const
     return MeshModel::MM_FACENUMBER;
 }
 
-int FilterFcvtPlugin::postCondition(QAction*) const
+int FilterFcvtPlugin::postCondition(QAction* a) const
 {
     // The input layer's geometry and standard data are not modified (the field filter only adds
-    // the custom attribute `rosy`); results are new layers.
-    return MeshModel::MM_NONE;
+    // the custom attribute `rosy`); results are new layers. The quality report may colour the
+    // current layer's vertices.
+    return ID(a) == FP_FCVT_QUALITY ? int(MeshModel::MM_VERTCOLOR) : int(MeshModel::MM_NONE);
 }
 
 void FilterFcvtPlugin::initParameterSet(QAction* a, MeshModel& m, RichParameterList& par)
 {
-    addParameters(a, defaultVertexCount(&m), bboxDiagonal(&m), par);
+    addParameters(a, nullptr, &m, par);
 }
 
 void FilterFcvtPlugin::initParameterSet(QAction* a, MeshDocument& md, RichParameterList& par)
 {
-    addParameters(a, defaultVertexCount(md.mm()), bboxDiagonal(md.mm()), par);
+    addParameters(a, &md, md.mm(), par);
 }
 
-void FilterFcvtPlugin::addParameters(QAction* a, int vertexCountDefault, float bboxDiagonal,
-                                     RichParameterList& par)
+void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m, RichParameterList& par)
 {
+    const int vertexCountDefault = defaultVertexCount(m);
+    const float diagonal = bboxDiagonal(m);
     switch (ID(a)) {
     case FP_FCVT_REMESH: {
         // Core defaults are the single source of truth for everything but vertexCount.
@@ -320,11 +439,33 @@ void FilterFcvtPlugin::addParameters(QAction* a, int vertexCountDefault, float b
                               "How the output size is given: by the number of vertices (Target "
                               "vertices) or by the edge length (Target edge length), converted to "
                               "a vertex count through the surface area."));
-        par.addParam(RichAbsPerc(kTargetLength, 0.01f * bboxDiagonal, 0.0f, bboxDiagonal,
+        par.addParam(RichAbsPerc(kTargetLength, 0.01f * diagonal, 0.0f, diagonal,
                                  "Target edge length",
                                  "Wanted edge length in world units (used when Size by is 'target "
                                  "edge length'); the vertex count is about 2 * area / (sqrt(3) * "
                                  "length^2). Default: 1% of the bounding-box diagonal."));
+        // Added after the first release: appended, so older scripts keep their order.
+        par.addParam(RichBool(kValenceOptimization, defaults.valenceOptimization,
+                              "Valence optimisation",
+                              "After the extraction, edge flips, collapses and splits that bring "
+                              "vertices to valence 6 (4 on boundaries), then a relaxation that "
+                              "realigns the edges (paper section 4.4)."));
+        par.addParam(RichFloat(kFeatureAngle, float(defaults.featureAngleDegrees),
+                               "Feature angle (deg)",
+                               "Input edges whose faces meet at a dihedral angle of at least this "
+                               "many degrees are sharp features that the output follows; 0 = no "
+                               "sharp features (0..180)."));
+        par.addParam(RichBool(kFeatureSelection, false, "Features from selection",
+                              "Also treat the border of the input's face selection (edges between a "
+                              "selected and an unselected face) as feature lines."));
+        par.addParam(RichBool(kAdaptive, false, "Adaptive (density from vertex quality)",
+                              "Sample density from the input's per-vertex quality (every value "
+                              "must be finite and > 0): more vertices where the quality is "
+                              "higher, the vertex count unchanged. Off: uniform density."));
+        par.addParam(RichBool(kColorIrregular, false, "Colour irregular vertices",
+                              "Colour the output's vertices by valence: blue below 6 (4 on a "
+                              "boundary), pink above, white at it. Replaces the colour carried "
+                              "over from the input."));
         break;
     }
     case FP_FCVT_FIELD: {
@@ -336,6 +477,21 @@ void FilterFcvtPlugin::addParameters(QAction* a, int vertexCountDefault, float b
         par.addParam(RichInt(kSeed, int(defaults.seed), "Random seed",
                              "Seed of the random initial directions of the smooth field (>= 0); "
                              "the same seed gives the same field."));
+        break;
+    }
+    case FP_FCVT_QUALITY: {
+        // The default reference is the measured layer itself, which means "no distances".
+        const char* description = "Reference layer (distances)";
+        const char* tooltip = "The layer d_RMS and d_H are measured against (e.g. the input of the "
+                              "remeshing). The current layer itself: no distances.";
+        if (md != nullptr && m != nullptr)
+            par.addParam(RichMesh(kReferenceLayer, m, md, description, tooltip));
+        else  // no document: a parameter without a mesh (only for completeness of the overload)
+            par.addParam(RichMesh(kReferenceLayer, static_cast<MeshModel*>(nullptr), nullptr,
+                                  description, tooltip));
+        par.addParam(RichBool(kColorIrregular, true, "Colour irregular vertices",
+                              "Colour the vertices by valence: blue below 6 (4 on a boundary), "
+                              "pink above, white at it."));
         break;
     }
     default:
@@ -354,6 +510,8 @@ bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParam
             return applyRemesh(md, par, cb);
         case FP_FCVT_FIELD:
             return applyField(md, par, cb);
+        case FP_FCVT_QUALITY:
+            return applyQuality(md, par, cb);
         default:
             return fail("FCVT: unknown filter");
         }
@@ -418,6 +576,9 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
                         .arg(fieldSource));
     if (seed < 0)
         return fail(QString("FCVT: seed must be >= 0 (got %1)").arg(seed));
+    const double featureAngle = par.getFloat(kFeatureAngle);
+    if (!(featureAngle >= 0 && featureAngle <= 180))
+        return fail(QString("FCVT: featureAngle must be 0..180 degrees, 0 = off (got %1)").arg(featureAngle));
 
     fieldcvt::RemeshParams params;
     params.vertexCount = vertexCount;
@@ -426,7 +587,23 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
     params.fcvtIterations = fcvtIterations;
     params.fieldSource = kFieldSources[fieldSource].source;
     params.seed = static_cast<std::uint64_t>(seed);
-    return remeshFcvt(md, params, cb);
+    params.valenceOptimization = par.getBool(kValenceOptimization);
+    params.featureAngleDegrees = featureAngle;
+    RemeshInputs inputs;
+    inputs.densityFromQuality = par.getBool(kAdaptive);
+    inputs.featuresFromSelection = par.getBool(kFeatureSelection);
+    inputs.colorIrregular = par.getBool(kColorIrregular);
+    return remeshFcvt(md, params, inputs, cb);
+}
+
+bool FilterFcvtPlugin::applyQuality(MeshDocument& md, const RichParameterList& par,
+                                    vcg::CallBackPos* cb)
+{
+    MeshModel* mesh = currentTriangleLayer(md);
+    if (mesh == nullptr)
+        return false;
+    MeshModel* reference = par.getMesh(kReferenceLayer);
+    return qualityReport(*mesh, reference == mesh ? nullptr : reference, par.getBool(kColorIrregular), cb);
 }
 
 bool FilterFcvtPlugin::applyField(MeshDocument& md, const RichParameterList& par,
@@ -462,7 +639,7 @@ MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
 }
 
 bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
-                                  vcg::CallBackPos* cb)
+                                  const RemeshInputs& inputs, vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
     if (input == nullptr)
@@ -487,6 +664,61 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
             if (!vi->IsD())
                 run.userDirections.push_back(toVec3(rosy[vi]));
     }
+    if (inputs.densityFromQuality) {
+        if (!input->hasDataMask(MeshModel::MM_VERTQUALITY))
+            return fail(QString("FCVT: adaptive needs per-vertex quality on layer '%1', which has "
+                                "none (compute one first, e.g. with 'Discrete Curvatures' or 'Per "
+                                "Vertex Quality Function', then make it positive)")
+                            .arg(input->label()));
+        run.density = fieldcvt::DensitySource::PerVertex;
+        run.vertexDensity.clear();
+        run.vertexDensity.reserve(in.vertices.size());
+        int bad = 0;
+        double firstBad = 0;
+        for (const CVertexO& v : input->cm.vert) {
+            if (v.IsD())
+                continue;
+            const double q = double(v.cQ());
+            if (!(q > 0) || !std::isfinite(q)) {
+                if (bad++ == 0)
+                    firstBad = q;
+            }
+            run.vertexDensity.push_back(q);
+        }
+        if (bad > 0)
+            return fail(QString("FCVT: adaptive takes the density from the per-vertex quality, which "
+                                "must be finite and > 0 at every vertex; %1 of %2 vertices of '%3' "
+                                "are not (e.g. %4). Map it to positive values first (e.g. 'Per "
+                                "Vertex Quality Function' with q = abs(q) + 0.1)")
+                            .arg(bad)
+                            .arg(run.vertexDensity.size())
+                            .arg(input->label())
+                            .arg(firstBad));
+    }
+    if (inputs.featuresFromSelection) {
+        std::vector<char> selected;
+        selected.reserve(in.faces.size());
+        int selectedCount = 0;
+        for (const CFaceO& f : input->cm.face)
+            if (!f.IsD()) {
+                selected.push_back(f.IsS() ? 1 : 0);
+                selectedCount += f.IsS() ? 1 : 0;
+            }
+        run.featureEdges = selectionBorder(in, selected);
+        if (run.featureEdges.empty())
+            Log(GLLogStream::WARNING,
+                QString("FCVT: featureSelection is on but the selection of '%1' (%2 of %3 faces) has "
+                        "no border inside the mesh: no feature edges from it")
+                    .arg(input->label())
+                    .arg(selectedCount)
+                    .arg(selected.size())
+                    .toStdString());
+        else
+            Log(QString("FCVT features: %1 edges on the border of the %2 selected faces")
+                    .arg(run.featureEdges.size())
+                    .arg(selectedCount)
+                    .toStdString());
+    }
 
     // MeshLab's callback takes an int percent; the 2020.09 callbacks never ask to stop, so the
     // core is never cancelled from here. Calls are throttled to changes of percent or stage.
@@ -500,7 +732,9 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
         if (p != lastPercent || stage != lastStage) {
             lastPercent = p;
             lastStage = stage;
-            cb(p, stage.c_str());
+            // "FCVT: CVT iterations" in the status bar; MeshLab draws the percent beside it.
+            const QByteArray label = stageLabel(stage).toUtf8();
+            cb(p, label.constData());
         }
         return true;
     };
@@ -551,6 +785,10 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
                                                      : keep.colour ? "colour" : "quality")
                     .arg(input->label())
                     .toStdString());
+        if (inputs.colorIrregular)
+            Log(("FCVT valence colours on '" + output->label() + "': " +
+                 applyValenceColours(result.mesh, *output))
+                    .toStdString());
     } catch (...) {
         md.delMesh(output);
         md.setCurrentMesh(input->id());
@@ -559,6 +797,19 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     if (cb != nullptr)
         cb(100, "FCVT done");
     logReport(result, output->label());
+    if (run.valenceOptimization) {
+        const fieldcvt::ValenceStats& v = result.valence;
+        Log(QString("FCVT valence optimisation: V6% %1 -> %2, %3 flips, %4 collapses, %5 splits in %6 rounds")
+                .arg(num(v.v6Before))
+                .arg(num(v.v6After))
+                .arg(v.flips)
+                .arg(v.collapses)
+                .arg(v.splits)
+                .arg(v.rounds)
+                .toStdString());
+    } else {
+        Log("FCVT valence optimisation: off");
+    }
     Log(QString("FCVT size: mean edge length %1 (%2 vertices)")
             .arg(num(meanEdgeLength(result.mesh)))
             .arg(result.mesh.vertexCount())
@@ -650,6 +901,59 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
             .arg(num(stats.segmentLength))
             .arg(num(stats.meanEdgeLength))
             .toStdString());
+    return true;
+}
+
+bool FilterFcvtPlugin::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular,
+                                     vcg::CallBackPos* cb)
+{
+    if (reference != nullptr && reference->cm.fn == 0)
+        return fail(QString("FCVT: the reference layer '%1' has no faces; choose a triangle mesh, or "
+                            "the measured layer itself for no distances")
+                        .arg(reference->label()));
+    if (cb != nullptr)
+        cb(0, "FCVT: measuring quality");
+    const fieldcvt::TriMesh measured = fcvt_plugin::toTriMesh(mesh.cm);
+    const fieldcvt::QualityMetrics quality = fieldcvt::computeQuality(measured);
+    const fieldcvt::TopologySummary topology = fieldcvt::computeTopology(measured);
+    fieldcvt::DistanceMetrics distance;
+    if (reference != nullptr) {
+        if (cb != nullptr)
+            cb(20, "FCVT: measuring distances");
+        const fieldcvt::TriMesh ref = fcvt_plugin::toTriMesh(reference->cm);
+        distance = fieldcvt::computeDistance(measured, ref, distanceSamples(measured, ref));
+    }
+    // Measured before anything changes: a failure above leaves the layer as it was.
+    QString colours;
+    if (colorIrregular)
+        colours = applyValenceColours(measured, mesh);
+    if (cb != nullptr)
+        cb(100, "FCVT: quality report done");
+
+    Log(QString("FCVT quality of '%1': %2 vertices, %3 faces")
+            .arg(mesh.label())
+            .arg(quality.vertices)
+            .arg(quality.faces)
+            .toStdString());
+    Log(("FCVT quality: " + qualityText(quality)).toStdString());
+    if (reference != nullptr) {
+        Log(QString("FCVT quality: d_RMS %1, d_H %2 (fractions of the bounding-box diagonal of '%3')")
+                .arg(num(distance.rms))
+                .arg(num(distance.hausdorff))
+                .arg(reference->label())
+                .toStdString());
+        if (mesh.cm.Tr != reference->cm.Tr)
+            Log(GLLogStream::WARNING,
+                QString("FCVT quality: '%1' and '%2' have different transformation matrices; the "
+                        "distances are between the stored coordinates")
+                    .arg(mesh.label(), reference->label())
+                    .toStdString());
+    } else {
+        Log("FCVT quality: d_RMS and d_H not measured (the reference layer is the measured layer)");
+    }
+    Log(("FCVT quality topology: " + topologyText(topology)).toStdString());
+    if (colorIrregular)
+        Log(("FCVT valence colours: " + colours).toStdString());
     return true;
 }
 

@@ -39,6 +39,16 @@ add_test(NAME meshlab_field_then_remesh
 add_test(NAME meshlab_colour_transfer
   COMMAND bash "${_fcvt_ml_dir}/colour_transfer.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/colour_transfer")
+add_test(NAME meshlab_quality_report
+  COMMAND bash "${_fcvt_ml_dir}/quality_report.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/quality_report")
+add_test(NAME meshlab_compare_isotropic
+  COMMAND bash "${_fcvt_ml_dir}/compare_isotropic.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/compare_isotropic")
+add_test(NAME meshlab_invalid_new_parameters
+  COMMAND bash "${_fcvt_ml_dir}/invalid_new_parameters.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/invalid_new_parameters")
 set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_parameter
   meshlab_field_torus meshlab_missing_rosy meshlab_field_then_remesh meshlab_colour_transfer
+  meshlab_quality_report meshlab_compare_isotropic meshlab_invalid_new_parameters
   PROPERTIES LABELS meshlab TIMEOUT 600)

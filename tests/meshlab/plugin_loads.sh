@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The staged meshlabserver loads libfilter_fcvt.so with both filters, and every .mlx script in
+# The staged meshlabserver loads libfilter_fcvt.so with its three filters, and every .mlx script in
 # resources/ lists exactly the parameters its filter declares (meshlabserver 2020.09 asserts on
 # a script missing one, and refuses a script with more), under the frozen names.
 # Usage: plugin_loads.sh SOURCE_DIR PLUGIN_SO WORK_DIR
@@ -26,8 +26,10 @@ dump_path, resources = sys.argv[1], sys.argv[2]
 frozen = {  # filter name -> parameter names, in declaration order (frozen API)
     "Remeshing: Field-Aligned CVT (FCVT)":
         ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed",
-         "sizeMode", "targetLength"],
+         "sizeMode", "targetLength", "valenceOptimization", "featureAngle", "featureSelection",
+         "adaptive", "colorIrregular"],
     "Compute 6-RoSy Field": ["fieldSource", "seed"],
+    "Remeshing Quality Report (FCVT)": ["referenceLayer", "colorIrregular"],
 }
 declared, current = {}, None
 for line in open(dump_path, encoding="utf-8", errors="replace"):
