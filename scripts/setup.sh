@@ -12,6 +12,7 @@ packages=(
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   meshlab xvfb xauth python3
+  x11-apps x11-utils
   clang libclang-rt-14-dev libomp-dev
 )
 

@@ -2,6 +2,7 @@
 # Builds a private MeshLab 2020.09 tree that loads our plugin without touching the system one:
 #
 #   STAGE/bin/meshlabserver                          copy of /usr/bin/meshlabserver
+#   STAGE/bin/meshlab                                copy of /usr/bin/meshlab (the GUI), if installed
 #   STAGE/lib/x86_64-linux-gnu/meshlab/libmeshlab-common.so -> system library
 #   STAGE/lib/x86_64-linux-gnu/meshlab/plugins/lib*.so      -> system plugins
 #   STAGE/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_fcvt.so -> PLUGIN_SO
@@ -42,6 +43,11 @@ mkdir -p "$stage/bin" "$stage/$libdir_rel/plugins"
 # cp to a temporary name then mv: a running meshlabserver keeps its inode, re-runs stay safe.
 cp -f "$sys_server" "$stage/bin/.meshlabserver.tmp"
 mv -f "$stage/bin/.meshlabserver.tmp" "$stage/bin/meshlabserver"
+sys_gui="${FCVT_MESHLAB_GUI:-$(dirname "$sys_server")/meshlab}"
+if [ -x "$sys_gui" ]; then
+  cp -f "$sys_gui" "$stage/bin/.meshlab.tmp"
+  mv -f "$stage/bin/.meshlab.tmp" "$stage/bin/meshlab"
+fi
 ln -sfn "$sys_libdir/libmeshlab-common.so" "$stage/$libdir_rel/libmeshlab-common.so"
 
 plugdir="$stage/$libdir_rel/plugins"

@@ -52,3 +52,9 @@ set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_p
   meshlab_field_torus meshlab_missing_rosy meshlab_field_then_remesh meshlab_colour_transfer
   meshlab_quality_report meshlab_compare_isotropic meshlab_invalid_new_parameters
   PROPERTIES LABELS meshlab TIMEOUT 600)
+# The GUI under Xvfb with the staged plugin and a screenshot (skipped, status 77, when the
+# display, xwd or the GUI is missing).
+add_test(NAME meshlab_gui_smoke
+  COMMAND bash "${_fcvt_ml_dir}/gui_smoke.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/gui_smoke")
+set_tests_properties(meshlab_gui_smoke PROPERTIES LABELS meshlab TIMEOUT 400 SKIP_RETURN_CODE 77)
