@@ -1,0 +1,1181 @@
+#include "valence.h"
+
+#include "energy.h"
+#include "errors.h"
+#include "interpolation.h"
+#include "metrics.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace fieldcvt {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+//! A face whose unit normal makes more than 60° with the surface normal (mean of its corners'
+//! surface normals) counts as folded, unless it was already that bad before the operation.
+constexpr double kMinNormalDot = 0.5;
+//! The final relaxation moves a vertex by at most this fraction of the mean edge length per step.
+constexpr double kMaxRelaxStep = 0.25;
+//! The final relaxation moves a vertex this fraction of the way to its one-ring centroid (Jacobi
+//! updates: a full step would let neighbours overshoot each other).
+constexpr double kRelaxFraction = 0.5;
+
+//! Derived roles (empty `roles`): a border vertex where the border turns by more than this is a
+//! Corner.
+constexpr double kCornerTurn = kPi / 4;
+
+enum class OpType : std::uint8_t { Flip = 0, Collapse = 1, Split = 2, None = 3 };
+
+//! One topological operation. Flip: edge (a, b), a < b. Collapse: edge (a, b), a < b. Split:
+//! vertex a, its ring cut at neighbours b and c (a keeps the neighbours from b counter-clockwise
+//! to c, the new vertex those from c to b).
+struct Op {
+    OpType type = OpType::None;
+    int a = -1, b = -1, c = -1;
+    int gain = 0;  //!< ΔR of this operation on the mesh it applies to
+    auto key() const { return std::make_tuple(static_cast<int>(type), a, b, c, gain); }
+};
+
+//! A proposal for an irregular vertex: one operation, or (look-ahead) a flip that does not
+//! change R followed by an operation it enables. `gain` is the total ΔR (< 0 is better).
+struct Candidate {
+    int gain = 0;
+    Op first, second;
+
+    bool compound() const { return second.type != OpType::None; }
+    auto key() const { return std::make_tuple(gain, compound(), first.key(), second.key()); }
+    bool operator<(const Candidate& o) const { return key() < o.key(); }
+    bool operator==(const Candidate& o) const { return key() == o.key(); }
+};
+
+struct CandidateHash {
+    size_t operator()(const Candidate& k) const
+    {
+        std::uint64_t h = 0;
+        for (const Op& op : {k.first, k.second})
+            for (std::int64_t x : {static_cast<std::int64_t>(op.type), static_cast<std::int64_t>(op.a),
+                                   static_cast<std::int64_t>(op.b), static_cast<std::int64_t>(op.c),
+                                   static_cast<std::int64_t>(op.gain)})
+                h = (h ^ static_cast<std::uint64_t>(x)) * 0x100000001B3ull + 0x9E3779B97F4A7C15ull;
+        return static_cast<size_t>(h);
+    }
+};
+
+//! The ordered neighbours of a vertex, counter-clockwise: face i is (v, verts[i], verts[i+1])
+//! (indices mod size for a closed fan). `ok` is false for a vertex whose faces do not form a
+//! single fan (non-manifold): such vertices are never touched.
+struct Ring {
+    std::vector<int> verts;
+    std::vector<int> faces;
+    bool closed = true;
+    bool ok = true;
+};
+
+bool isFeatureLike(VertexRole r) { return r == VertexRole::Feature || r == VertexRole::Corner; }
+
+//! The smallest angle of triangle (p0, p1, p2) in radians (atan2 form, as computeQuality).
+double smallestAngle(const Vec3& p0, const Vec3& p1, const Vec3& p2)
+{
+    const Vec3 p[3] = {p0, p1, p2};
+    double smallest = kPi;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 u = p[(k + 1) % 3] - p[k], w = p[(k + 2) % 3] - p[k];
+        smallest = std::min(smallest, std::atan2(u.cross(w).norm(), u.dot(w)));
+    }
+    return smallest;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+//! The state of one optimizeValence call: a mutable triangle soup with per-vertex incident face
+//! lists (faces are only ever killed and appended, so an undo log can roll back a tentative
+//! operation exactly), plus each vertex's closest point on the input and surface normal there.
+class ValenceOptimizer {
+public:
+    ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
+                     const ValenceParams& params);
+    ValenceStats run();
+
+private:
+    void markBorderCorners();
+
+    // --- mutable mesh with undo -------------------------------------------------------------
+    enum class UndoKind : std::uint8_t { AddFace, KillFace, Move, AddVertex, KillVertex, Valence };
+    struct UndoEntry {
+        UndoKind kind;
+        int index;
+        Vec3 position;
+        ClosestPoint closest;
+        Vec3 normal;
+    };
+
+    int addFace(const Face& f);
+    void killFace(int f);
+    int addVertex(const Vec3& p, VertexRole role);
+    void killVertex(int v);
+    void setPosition(int v, const Vec3& p, const ClosestPoint& cp);
+    void rollback(size_t mark);
+
+    // --- queries ------------------------------------------------------------------------------
+    void ring(int v, Ring& r) const;
+    int target(int v) const { return onBorder_[v] ? 4 : 6; }
+    int valenceDelta(int v, int delta) const
+    {
+        const int before = valence_[v] - target(v), after = before + delta;
+        return after * after - before * before;
+    }
+    //! Faces containing both a and b.
+    void edgeFaces(int a, int b, std::vector<int>& out) const;
+    bool hasEdge(int a, int b) const;
+    Vec3 surfaceNormal(const ClosestPoint& cp) const;
+    Vec3 faceUnitNormal(int f) const;
+    //! Smallest angle (radians) and smallest normal agreement over the faces around `verts`.
+    void localQuality(const std::vector<int>& verts, double& minAngle, double& minDot);
+
+    // --- operations ---------------------------------------------------------------------------
+    bool evaluateFlip(int a, int b, int& gain, int& c, int& d, int& f1, int& f2) const;
+    bool evaluateCollapse(int a, int b, int& gain, int& keep, int& remove) const;
+    //! The single operations around irregular vertex v that lower R (ΔR < 0), or with
+    //! `zeroGainFlips` the flips around v that leave R unchanged (look-ahead first steps).
+    void collectOperations(int v, bool zeroGainFlips, std::vector<Op>& out);
+    //! Look-ahead (when no single operation is left): each R-neutral flip around v followed by
+    //! the best operation it makes possible around the flipped edge.
+    void collectCompound(int v, std::vector<Candidate>& out);
+    //! Vertices that must be unlocked (and unchanged since the candidate was made) for `op`.
+    void involvedVertices(const Op& op, std::vector<int>& out);
+    //! The vertices a candidate reads and changes: for a single operation its involved
+    //! vertices, for a compound one their one-rings too (the second operation lies there).
+    void candidateRegion(const Candidate& c, std::vector<int>& out);
+    //! Re-checks `op` (topology and ΔR) on the current mesh and applies its topology, with the
+    //! first positions of the vertices it creates or merges; adds the vertices to smooth to
+    //! `smooth` and the removed / created ones to `changed`. Logging must be on.
+    bool applyTopology(const Op& op, std::vector<int>& smooth, std::vector<int>& changed);
+    //! Applies `c` with local smoothing; keeps it only if the geometry stays valid. Fills the
+    //! vertices it changed into `changed`.
+    bool tryApply(const Candidate& c, std::vector<int>& changed);
+    //! Applies the sorted candidates greedily where their region is unlocked; returns how many.
+    int applyCandidates(const std::vector<Candidate>& candidates);
+    void smoothLocally(const std::vector<int>& verts);
+    //! Moves v towards `goal` as its role allows (tangentially, then on the surface / line).
+    void moveVertex(int v, const Vec3& goal);
+    Vec3 oneRingCentroid(int v) const;
+    void updateValences(const std::vector<int>& verts);
+
+    // --- final relaxation and output --------------------------------------------------------
+    void relax();
+    long long irregularity() const;
+    double meanFieldDistance();
+    void compact();
+
+    TriMesh& mesh_;
+    std::vector<VertexRole>& roles_;
+    const ValenceSurface& surface_;
+    const ValenceParams& params_;
+    std::vector<Vec3> inputNormals_;  //!< area-weighted vertex normals of the input
+
+    std::vector<Vec3> pos_;
+    std::vector<ClosestPoint> closest_;  //!< per vertex: its closest point on the input
+    std::vector<Vec3> normal_;           //!< per vertex: surface normal at its closest point
+    std::vector<VertexRole> role_;
+    std::vector<char> onBorder_, vertexAlive_, manifold_;
+    std::vector<int> valence_;
+    std::vector<Face> faces_;
+    std::vector<char> faceAlive_;
+    std::vector<std::vector<int>> vertexFaces_;  //!< alive incident faces, sorted
+    std::vector<UndoEntry> undo_;
+    bool logging_ = false;
+    double edgeLength_ = 1;  //!< mean edge length of the mesh at the start
+
+    std::vector<int> lockStamp_;
+    std::vector<long long> changeStamp_;
+    int round_ = 0;
+    long long opCounter_ = 0;  //!< operations committed so far
+    //! Candidates that failed the geometric checks, with opCounter_ at the time: retried only
+    //! once one of their vertices changed.
+    std::unordered_map<Candidate, long long, CandidateHash> failed_;
+    ValenceStats stats_;
+};
+
+ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
+                                   const ValenceParams& params)
+    : mesh_(mesh), roles_(roles), surface_(surface), params_(params)
+{
+    const int n = mesh.vertexCount();
+    for (const Face& f : mesh.faces)
+        for (int v : f)
+            if (v < 0 || v >= n) throw InvalidInputError("optimizeValence: a face refers to a missing vertex");
+    if (!roles.empty() && static_cast<int>(roles.size()) != n)
+        throw InvalidInputError("optimizeValence: " + std::to_string(roles.size()) + " vertex roles for " +
+                                std::to_string(n) + " vertices");
+    if (surface.field && (surface.field->normals.size() != surface.input.vertices.size() ||
+                          surface.field->directions.size() != surface.input.vertices.size()))
+        throw InvalidInputError("optimizeValence: the field does not match the input surface");
+    if (params.maxRounds < 0 || params.localSmoothing < 0 || params.relaxIterations < 0)
+        throw InvalidInputError("optimizeValence: negative round or iteration count");
+
+    inputNormals_ = vertexNormals(surface.input);
+    pos_ = mesh.vertices;
+    role_ = roles.empty() ? std::vector<VertexRole>(n, VertexRole::Free) : roles;
+    vertexAlive_.assign(n, 1);
+    faces_ = mesh.faces;
+    faceAlive_.assign(faces_.size(), 1);
+    vertexFaces_.assign(n, {});
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
+        const Face& t = faces_[f];
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+            throw InvalidInputError("optimizeValence: face " + std::to_string(f) + " repeats a vertex");
+        }
+        for (int v : t) vertexFaces_[v].push_back(f);
+    }
+
+    // Border vertices (on an edge with one face) aim at valence 4 (§4.4). They move only along
+    // the input's border, so a Free one is promoted to Boundary: the border is never flipped,
+    // collapsed or split, hence a vertex's border status never changes.
+    onBorder_.assign(n, 0);
+    std::vector<int> shared;
+    double lengthSum = 0;
+    long long edgeCount = 0;
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int a = faces_[f][k], b = faces_[f][(k + 1) % 3];
+            edgeFaces(a, b, shared);
+            if (shared.size() == 1) onBorder_[a] = onBorder_[b] = 1;
+            if (a < b || shared.size() == 1) lengthSum += (pos_[a] - pos_[b]).norm(), ++edgeCount;
+        }
+    if (edgeCount > 0 && lengthSum > 0) edgeLength_ = lengthSum / edgeCount;
+    for (int v = 0; v < n; ++v)
+        if (onBorder_[v] && role_[v] == VertexRole::Free) role_[v] = VertexRole::Boundary;
+    if (roles.empty()) markBorderCorners();
+
+    closest_.resize(n);
+    normal_.resize(n);
+    for (int v = 0; v < n; ++v) {
+        closest_[v] = surface.tree.closest(pos_[v]);
+        normal_[v] = surfaceNormal(closest_[v]);
+    }
+    manifold_.assign(n, 1);
+    valence_.assign(n, 0);
+    Ring r;
+    for (int v = 0; v < n; ++v) {
+        ring(v, r);
+        manifold_[v] = r.ok && !vertexFaces_[v].empty();
+        valence_[v] = static_cast<int>(r.verts.size());
+    }
+    lockStamp_.assign(n, 0);
+    changeStamp_.assign(n, 0);
+}
+
+void ValenceOptimizer::markBorderCorners()
+{
+    // Derived roles: a border vertex where the border turns by more than kCornerTurn would be
+    // rounded off if it slid along the border; it stays fixed.
+    const int n = static_cast<int>(pos_.size());
+    std::vector<std::vector<int>> borderNeighbours(n);
+    std::vector<int> shared;
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int a = faces_[f][k], b = faces_[f][(k + 1) % 3];
+            edgeFaces(a, b, shared);
+            if (shared.size() == 1) borderNeighbours[a].push_back(b), borderNeighbours[b].push_back(a);
+        }
+    const double cosLimit = std::cos(kPi - kCornerTurn);
+    for (int v = 0; v < n; ++v) {
+        if (!onBorder_[v]) continue;
+        const auto& w = borderNeighbours[v];
+        bool corner = w.size() != 2;
+        if (!corner) {
+            const Vec3 u1 = (pos_[w[0]] - pos_[v]).normalized(), u2 = (pos_[w[1]] - pos_[v]).normalized();
+            corner = u1.dot(u2) > cosLimit;  // the angle between the two border edges < 180° − turn
+        }
+        if (corner) role_[v] = VertexRole::Corner;
+    }
+}
+
+// --- mutable mesh --------------------------------------------------------------------------
+
+int ValenceOptimizer::addFace(const Face& f)
+{
+    const int index = static_cast<int>(faces_.size());
+    faces_.push_back(f);
+    faceAlive_.push_back(1);
+    for (int v : f) vertexFaces_[v].push_back(index);  // the largest index: stays sorted
+    if (logging_) undo_.push_back({UndoKind::AddFace, index, {}, {}, {}});
+    return index;
+}
+
+void ValenceOptimizer::killFace(int f)
+{
+    faceAlive_[f] = 0;
+    for (int v : faces_[f]) {
+        auto& list = vertexFaces_[v];
+        list.erase(std::lower_bound(list.begin(), list.end(), f));
+    }
+    if (logging_) undo_.push_back({UndoKind::KillFace, f, {}, {}, {}});
+}
+
+int ValenceOptimizer::addVertex(const Vec3& p, VertexRole role)
+{
+    const int v = static_cast<int>(pos_.size());
+    pos_.push_back(p);
+    closest_.push_back(surface_.tree.closest(p));
+    normal_.push_back(surfaceNormal(closest_.back()));
+    role_.push_back(role);
+    onBorder_.push_back(0);
+    vertexAlive_.push_back(1);
+    manifold_.push_back(1);
+    valence_.push_back(0);
+    vertexFaces_.emplace_back();
+    lockStamp_.push_back(0);
+    changeStamp_.push_back(0);
+    if (logging_) undo_.push_back({UndoKind::AddVertex, v, {}, {}, {}});
+    return v;
+}
+
+void ValenceOptimizer::killVertex(int v)
+{
+    vertexAlive_[v] = 0;
+    if (logging_) undo_.push_back({UndoKind::KillVertex, v, {}, {}, {}});
+}
+
+void ValenceOptimizer::setPosition(int v, const Vec3& p, const ClosestPoint& cp)
+{
+    if (logging_) undo_.push_back({UndoKind::Move, v, pos_[v], closest_[v], normal_[v]});
+    pos_[v] = p;
+    closest_[v] = cp;
+    normal_[v] = surfaceNormal(cp);
+}
+
+void ValenceOptimizer::rollback(size_t mark)
+{
+    while (undo_.size() > mark) {
+        const UndoEntry e = undo_.back();
+        undo_.pop_back();
+        switch (e.kind) {
+        case UndoKind::AddFace:
+            for (int v : faces_[e.index]) vertexFaces_[v].pop_back();  // it was appended last
+            faces_.pop_back();
+            faceAlive_.pop_back();
+            break;
+        case UndoKind::KillFace:
+            faceAlive_[e.index] = 1;
+            for (int v : faces_[e.index]) {
+                auto& list = vertexFaces_[v];
+                list.insert(std::lower_bound(list.begin(), list.end(), e.index), e.index);
+            }
+            break;
+        case UndoKind::Move:
+            pos_[e.index] = e.position;
+            closest_[e.index] = e.closest;
+            normal_[e.index] = e.normal;
+            break;
+        case UndoKind::AddVertex:
+            pos_.pop_back();
+            closest_.pop_back();
+            normal_.pop_back();
+            role_.pop_back();
+            onBorder_.pop_back();
+            vertexAlive_.pop_back();
+            manifold_.pop_back();
+            valence_.pop_back();
+            vertexFaces_.pop_back();
+            lockStamp_.pop_back();
+            changeStamp_.pop_back();
+            break;
+        case UndoKind::KillVertex:
+            vertexAlive_[e.index] = 1;
+            break;
+        case UndoKind::Valence:  // old valence in position.x, manifold flag in position.y
+            valence_[e.index] = static_cast<int>(e.position.x());
+            manifold_[e.index] = static_cast<char>(e.position.y());
+            break;
+        }
+    }
+}
+
+// --- queries -------------------------------------------------------------------------------
+
+void ValenceOptimizer::ring(int v, Ring& r) const
+{
+    r.verts.clear();
+    r.faces.clear();
+    r.closed = true;
+    r.ok = true;
+    const auto& list = vertexFaces_[v];
+    const int k = static_cast<int>(list.size());
+    if (k == 0) return;
+    // Face (v, next, prev) turns counter-clockwise from `next` to `prev`.
+    auto nextOf = [&](int f) {
+        const Face& t = faces_[f];
+        const int i = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+        return std::make_pair(t[(i + 1) % 3], t[(i + 2) % 3]);
+    };
+    // The start: the `next` of a face that is no face's `prev` (border), else the smallest
+    // neighbour (a canonical start, so the ring does not depend on the face order).
+    int startFace = -1, openStarts = 0;
+    for (int f : list) {
+        const int nxt = nextOf(f).first;
+        bool isPrev = false;
+        for (int g : list) isPrev |= nextOf(g).second == nxt;
+        if (!isPrev) {
+            ++openStarts;
+            startFace = f;
+        }
+    }
+    if (openStarts > 1) {
+        r.ok = false;
+        return;
+    }
+    r.closed = openStarts == 0;
+    if (r.closed) {
+        startFace = list[0];
+        for (int f : list)
+            if (nextOf(f).first < nextOf(startFace).first) startFace = f;
+    }
+    int f = startFace;
+    r.verts.push_back(nextOf(f).first);
+    for (int step = 0; step < k; ++step) {
+        r.faces.push_back(f);
+        const int prv = nextOf(f).second;
+        int following = -1, matches = 0;
+        for (int g : list)
+            if (nextOf(g).first == prv) following = g, ++matches;
+        if (matches > 1) {
+            r.ok = false;
+            return;
+        }
+        if (following < 0) {  // the end of an open fan
+            r.verts.push_back(prv);
+            if (step != k - 1) r.ok = false;
+            break;
+        }
+        if (step == k - 1) {
+            if (following != startFace) r.ok = false;
+            break;
+        }
+        if (following == startFace) {  // closed before visiting every face: several fans
+            r.ok = false;
+            return;
+        }
+        r.verts.push_back(prv);
+        f = following;
+    }
+    if (static_cast<int>(r.faces.size()) != k) r.ok = false;
+    // Repeated neighbours (two faces over the same edge on the same side) are not manifold.
+    std::vector<int> sorted = r.verts;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) r.ok = false;
+}
+
+void ValenceOptimizer::edgeFaces(int a, int b, std::vector<int>& out) const
+{
+    out.clear();
+    for (int f : vertexFaces_[a]) {
+        const Face& t = faces_[f];
+        if (t[0] == b || t[1] == b || t[2] == b) out.push_back(f);
+    }
+}
+
+bool ValenceOptimizer::hasEdge(int a, int b) const
+{
+    for (int f : vertexFaces_[a]) {
+        const Face& t = faces_[f];
+        if (t[0] == b || t[1] == b || t[2] == b) return true;
+    }
+    return false;
+}
+
+Vec3 ValenceOptimizer::surfaceNormal(const ClosestPoint& cp) const
+{
+    if (cp.face < 0) return Vec3::UnitZ();
+    const Face& t = surface_.input.faces[cp.face];
+    Vec3 n = cp.barycentric[0] * inputNormals_[t[0]] + cp.barycentric[1] * inputNormals_[t[1]] +
+             cp.barycentric[2] * inputNormals_[t[2]];
+    if (!(n.squaredNorm() > 1e-24)) n = faceNormal(surface_.input, cp.face);
+    const double length = n.norm();
+    return length > 0 ? Vec3(n / length) : Vec3(Vec3::UnitZ());
+}
+
+Vec3 ValenceOptimizer::faceUnitNormal(int f) const
+{
+    const Face& t = faces_[f];
+    const Vec3 n = (pos_[t[1]] - pos_[t[0]]).cross(pos_[t[2]] - pos_[t[0]]);
+    const double length = n.norm();
+    return length > 0 ? Vec3(n / length) : Vec3(Vec3::Zero());
+}
+
+void ValenceOptimizer::localQuality(const std::vector<int>& verts, double& minAngle, double& minDot)
+{
+    std::vector<int> faces;
+    for (int v : verts)
+        if (vertexAlive_[v]) faces.insert(faces.end(), vertexFaces_[v].begin(), vertexFaces_[v].end());
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    minAngle = kPi;
+    minDot = 1;
+    for (int f : faces) {
+        const Face& t = faces_[f];
+        minAngle = std::min(minAngle, smallestAngle(pos_[t[0]], pos_[t[1]], pos_[t[2]]));
+        const Vec3 reference = normal_[t[0]] + normal_[t[1]] + normal_[t[2]];
+        const double length = reference.norm();
+        minDot = std::min(minDot, length > 0 ? faceUnitNormal(f).dot(reference) / length : -1.0);
+    }
+}
+
+// --- candidate operations -----------------------------------------------------------------
+
+bool ValenceOptimizer::evaluateFlip(int a, int b, int& gain, int& c, int& d, int& f1, int& f2) const
+{
+    if (!manifold_[a] || !manifold_[b]) return false;
+    // Feature chains stay: an edge between two feature-line vertices is a feature edge.
+    if (isFeatureLike(role_[a]) && isFeatureLike(role_[b])) return false;
+    f1 = f2 = -1;
+    int count = 0;
+    for (int f : vertexFaces_[a]) {
+        const Face& t = faces_[f];
+        for (int k = 0; k < 3; ++k) {
+            if (t[k] != a) continue;
+            if (t[(k + 1) % 3] == b) f1 = f, c = t[(k + 2) % 3], ++count;       // (a, b, c)
+            else if (t[(k + 2) % 3] == b) f2 = f, d = t[(k + 1) % 3], ++count;  // (b, a, d)
+        }
+    }
+    // Border edges (one face) are never flipped.
+    if (count != 2 || f1 < 0 || f2 < 0 || c == d) return false;
+    if (!manifold_[c] || !manifold_[d]) return false;
+    if (hasEdge(c, d)) return false;  // the new edge exists already: the flip would duplicate it
+    if (valence_[a] - 1 < 3 || valence_[b] - 1 < 3) return false;
+    gain = valenceDelta(a, -1) + valenceDelta(b, -1) + valenceDelta(c, +1) + valenceDelta(d, +1);
+    return true;
+}
+
+bool ValenceOptimizer::evaluateCollapse(int a, int b, int& gain, int& keep, int& remove) const
+{
+    if (!manifold_[a] || !manifold_[b]) return false;
+    // At least one Free end; the merged vertex keeps the constrained one's position and role.
+    const bool freeA = role_[a] == VertexRole::Free, freeB = role_[b] == VertexRole::Free;
+    if (!freeA && !freeB) return false;
+    keep = !freeA ? a : !freeB ? b : std::min(a, b);
+    remove = keep == a ? b : a;
+    int count = 0, c = -1, d = -1;
+    for (int f : vertexFaces_[a]) {
+        const Face& t = faces_[f];
+        for (int k = 0; k < 3; ++k) {
+            if (t[k] != a) continue;
+            if (t[(k + 1) % 3] == b) c = t[(k + 2) % 3], ++count;
+            else if (t[(k + 2) % 3] == b) d = t[(k + 1) % 3], ++count;
+        }
+    }
+    if (count != 2 || c < 0 || d < 0 || c == d) return false;
+    if (!manifold_[c] || !manifold_[d]) return false;
+    // Link condition: the common neighbours of a and b are exactly the two opposite vertices,
+    // otherwise the collapse would pinch the surface (non-manifold edge or vertex).
+    std::vector<int> neighbours;
+    for (int f : vertexFaces_[a])
+        for (int x : faces_[f])
+            if (x != a && x != b) neighbours.push_back(x);
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    int common = 0;
+    for (int x : neighbours) common += hasEdge(x, b);
+    if (common != 2) return false;
+    const int merged = valence_[a] + valence_[b] - 4;
+    if (merged < 3 || valence_[c] - 1 < 3 || valence_[d] - 1 < 3) return false;
+    const int before = valence_[a] - target(a), beforeB = valence_[b] - target(b);
+    const int after = merged - target(keep);
+    gain = after * after - before * before - beforeB * beforeB + valenceDelta(c, -1) + valenceDelta(d, -1);
+    return true;
+}
+
+void ValenceOptimizer::collectOperations(int v, bool zeroGainFlips, std::vector<Op>& out)
+{
+    Ring r;
+    ring(v, r);
+    if (!r.ok) return;
+    int gain, c, d, f1, f2, keep, remove;
+    auto wanted = [&](int g) { return zeroGainFlips ? g == 0 : g < 0; };
+    for (int w : r.verts) {
+        // Flips of the edges at v (lower its valence).
+        if (evaluateFlip(v, w, gain, c, d, f1, f2) && wanted(gain))
+            out.push_back({OpType::Flip, std::min(v, w), std::max(v, w), -1, gain});
+        // Collapses of the edges at v.
+        if (!zeroGainFlips && evaluateCollapse(v, w, gain, keep, remove) && gain < 0)
+            out.push_back({OpType::Collapse, std::min(v, w), std::max(v, w), -1, gain});
+    }
+    // Flips of the edges opposite v in its faces (raise its valence).
+    for (size_t i = 0; i + 1 < r.verts.size() + (r.closed ? 1 : 0); ++i) {
+        const int x = r.verts[i], y = r.verts[(i + 1) % r.verts.size()];
+        if (evaluateFlip(x, y, gain, c, d, f1, f2) && wanted(gain))
+            out.push_back({OpType::Flip, std::min(x, y), std::max(x, y), -1, gain});
+    }
+    if (zeroGainFlips) return;
+    // Splits of v (interior Free vertices): v keeps ring[i..j], the new vertex ring[j..i].
+    if (role_[v] == VertexRole::Free && r.closed && !onBorder_[v]) {
+        const int n = static_cast<int>(r.verts.size());
+        for (int i = 0; i < n; ++i)
+            for (int s = 2; s <= n - 2; ++s) {
+                const int j = (i + s) % n;
+                const int a = r.verts[i], b = r.verts[j];
+                const int keptValence = s + 2, newValence = n - s + 2;
+                const int before = n - 6;
+                gain = (keptValence - 6) * (keptValence - 6) + (newValence - 6) * (newValence - 6) - before * before +
+                       valenceDelta(a, +1) + valenceDelta(b, +1);
+                if (gain < 0) out.push_back({OpType::Split, v, a, b, gain});
+            }
+    }
+}
+
+void ValenceOptimizer::collectCompound(int v, std::vector<Candidate>& out)
+{
+    // An isolated 5–7 pair cannot be removed by one operation, but two defects a few edges
+    // apart often can after one R-neutral flip has moved one of them: a depth-2 search.
+    std::vector<Op> firsts, seconds;
+    collectOperations(v, true, firsts);
+    std::vector<int> smooth, changed, around;
+    Ring r;
+    for (const Op& first : firsts) {
+        const size_t mark = undo_.size();
+        logging_ = true;
+        smooth.clear();
+        changed.clear();
+        if (applyTopology(first, smooth, changed)) {
+            updateValences(smooth);
+            // The follow-up must use what the flip changed: operations of the irregular
+            // vertices among the flipped quad and its neighbours.
+            around = smooth;
+            for (int x : smooth) {
+                ring(x, r);
+                around.insert(around.end(), r.verts.begin(), r.verts.end());
+            }
+            std::sort(around.begin(), around.end());
+            around.erase(std::unique(around.begin(), around.end()), around.end());
+            seconds.clear();
+            for (int x : around)
+                if (manifold_[x] && valence_[x] != target(x)) collectOperations(x, false, seconds);
+            const Op* best = nullptr;
+            for (const Op& second : seconds)
+                if (!best || std::make_tuple(second.gain, second.key()) < std::make_tuple(best->gain, best->key()))
+                    best = &second;
+            if (best) out.push_back({first.gain + best->gain, first, *best});
+        }
+        rollback(mark);
+        logging_ = false;
+    }
+}
+
+void ValenceOptimizer::involvedVertices(const Op& op, std::vector<int>& out)
+{
+    out.clear();
+    Ring r;
+    auto addRing = [&](int v) {
+        out.push_back(v);
+        ring(v, r);
+        out.insert(out.end(), r.verts.begin(), r.verts.end());
+    };
+    if (op.type == OpType::Flip) {
+        out = {op.a, op.b};
+        int gain, c, d, f1, f2;
+        if (evaluateFlip(op.a, op.b, gain, c, d, f1, f2)) out.push_back(c), out.push_back(d);
+    } else if (op.type == OpType::Collapse) {
+        addRing(op.a);
+        addRing(op.b);
+    } else if (op.type == OpType::Split) {
+        addRing(op.a);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+Vec3 ValenceOptimizer::oneRingCentroid(int v) const
+{
+    // Area-weighted mean of the one-ring triangles' centroids: the centroid of the union of the
+    // triangles, a cheap stand-in for v's Voronoi cell centroid (CVT-like smoothing).
+    Vec3 sum = Vec3::Zero();
+    double area = 0;
+    for (int f : vertexFaces_[v]) {
+        const Face& t = faces_[f];
+        const Vec3 &p0 = pos_[t[0]], &p1 = pos_[t[1]], &p2 = pos_[t[2]];
+        const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+        sum += a * (p0 + p1 + p2) / 3.0;
+        area += a;
+    }
+    return area > 0 ? Vec3(sum / area) : pos_[v];
+}
+
+void ValenceOptimizer::moveVertex(int v, const Vec3& goal)
+{
+    const VertexRole role = role_[v];
+    if (role == VertexRole::Corner) return;
+    Vec3 u = goal - pos_[v];
+    u -= u.dot(normal_[v]) * normal_[v];  // tangential
+    const Vec3 q = pos_[v] + u;
+    if (role == VertexRole::Free) {
+        const ClosestPoint cp = surface_.tree.closest(q);
+        setPosition(v, cp.point, cp);
+        return;
+    }
+    const std::vector<Segment>& line = role == VertexRole::Boundary ? surface_.border : surface_.features;
+    if (line.empty()) return;  // nothing to slide along: stays
+    const Vec3 p = closestPointOnSegments(q, line);
+    setPosition(v, p, surface_.tree.closest(p));
+}
+
+void ValenceOptimizer::smoothLocally(const std::vector<int>& verts)
+{
+    // §4.4: "a local tangential smoothing step to repair the distortion induced by the
+    // operation". Gauss–Seidel in index order (deterministic).
+    for (int step = 0; step < params_.localSmoothing; ++step)
+        for (int v : verts)
+            if (vertexAlive_[v] && !vertexFaces_[v].empty()) moveVertex(v, oneRingCentroid(v));
+}
+
+void ValenceOptimizer::updateValences(const std::vector<int>& verts)
+{
+    Ring r;
+    for (int v : verts) {
+        if (!vertexAlive_[v]) continue;
+        if (logging_) undo_.push_back({UndoKind::Valence, v, Vec3(valence_[v], manifold_[v], 0), {}, {}});
+        ring(v, r);
+        manifold_[v] = r.ok && !vertexFaces_[v].empty();
+        valence_[v] = static_cast<int>(r.verts.size());
+    }
+}
+
+void ValenceOptimizer::candidateRegion(const Candidate& cand, std::vector<int>& out)
+{
+    involvedVertices(cand.first, out);
+    if (!cand.compound()) return;
+    Ring r;
+    const std::vector<int> inner = out;
+    for (int v : inner) {
+        ring(v, r);
+        out.insert(out.end(), r.verts.begin(), r.verts.end());
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+bool ValenceOptimizer::applyTopology(const Op& op, std::vector<int>& smooth, std::vector<int>& changed)
+{
+    // Re-check the operation on the current mesh: its vertices are unlocked, so nothing has
+    // changed around them, but a stale candidate must never be applied.
+    int gain = 0;
+    Ring r;
+    if (op.type == OpType::Flip) {
+        int c, d, f1, f2;
+        if (!evaluateFlip(op.a, op.b, gain, c, d, f1, f2) || gain != op.gain) return false;
+        // (a, b, c) and (b, a, d) become (d, b, c) and (c, a, d): the same orientation.
+        killFace(f1);
+        killFace(f2);
+        addFace({d, op.b, c});
+        addFace({c, op.a, d});
+        smooth.insert(smooth.end(), {op.a, op.b, c, d});
+        return true;
+    }
+    if (op.type == OpType::Collapse) {
+        int keep, remove;
+        if (!evaluateCollapse(op.a, op.b, gain, keep, remove) || gain != op.gain) return false;
+        const std::vector<int> facesOfRemoved = vertexFaces_[remove];
+        const Vec3 midpoint = 0.5 * (pos_[keep] + pos_[remove]);
+        const bool bothFree = role_[keep] == VertexRole::Free && role_[remove] == VertexRole::Free;
+        for (int f : facesOfRemoved) {
+            Face t = faces_[f];
+            const bool hasKeep = t[0] == keep || t[1] == keep || t[2] == keep;
+            killFace(f);
+            if (hasKeep) continue;  // the two faces of the collapsed edge disappear
+            for (int& x : t)
+                if (x == remove) x = keep;
+            addFace(t);
+        }
+        killVertex(remove);
+        // The merged vertex keeps a constrained end's position, else starts at the midpoint.
+        if (bothFree) {
+            const ClosestPoint cp = surface_.tree.closest(midpoint);
+            setPosition(keep, cp.point, cp);
+        }
+        ring(keep, r);
+        smooth.insert(smooth.end(), r.verts.begin(), r.verts.end());
+        smooth.push_back(keep);
+        changed.push_back(remove);
+        return true;
+    }
+    if (op.type != OpType::Split) return false;
+    const int v = op.a;
+    ring(v, r);
+    if (!r.ok || !r.closed || role_[v] != VertexRole::Free || onBorder_[v]) return false;
+    const std::vector<int> splitRing = r.verts;
+    const int n = static_cast<int>(splitRing.size());
+    int splitI = -1, splitJ = -1;
+    for (int i = 0; i < n; ++i) {
+        if (splitRing[i] == op.b) splitI = i;
+        if (splitRing[i] == op.c) splitJ = i;
+    }
+    if (splitI < 0 || splitJ < 0) return false;
+    const int s = (splitJ - splitI + n) % n;
+    if (s < 2 || s > n - 2) return false;
+    const int keptValence = s + 2, newValence = n - s + 2, before = n - 6;
+    gain = (keptValence - 6) * (keptValence - 6) + (newValence - 6) * (newValence - 6) - before * before +
+           valenceDelta(op.b, +1) + valenceDelta(op.c, +1);
+    if (gain != op.gain) return false;
+
+    const Vec3 p = pos_[v];
+    Vec3 keptCentre = Vec3::Zero(), newCentre = Vec3::Zero();
+    int keptCount = 0, newCount = 0;
+    for (int k = splitI;; k = (k + 1) % n) {
+        keptCentre += pos_[splitRing[k]], ++keptCount;
+        if (k == splitJ) break;
+    }
+    for (int k = splitJ;; k = (k + 1) % n) {
+        newCentre += pos_[splitRing[k]], ++newCount;
+        if (k == splitI) break;
+    }
+    keptCentre /= keptCount;
+    newCentre /= newCount;
+    // Each half starts a third of the way towards the neighbours it keeps; the local smoothing
+    // then evens the two fans out.
+    const Vec3 newPosition = p + (newCentre - p) / 3.0;
+    const int w = addVertex(newPosition, VertexRole::Free);
+    setPosition(w, closest_[w].point, closest_[w]);
+    // Ring faces (v, ring[k], ring[k+1]) for k = j .. i-1 go to w.
+    for (int k = splitJ; k != splitI; k = (k + 1) % n) {
+        const int x = splitRing[k], y = splitRing[(k + 1) % n];
+        int face = -1;
+        for (int f : vertexFaces_[v]) {
+            const Face& t = faces_[f];
+            for (int q = 0; q < 3; ++q)
+                if (t[q] == v && t[(q + 1) % 3] == x && t[(q + 2) % 3] == y) face = f;
+        }
+        if (face < 0) return false;  // cannot happen on a manifold ring; the caller rolls back
+        Face t = faces_[face];
+        killFace(face);
+        for (int& q : t)
+            if (q == v) q = w;
+        addFace(t);
+    }
+    addFace({v, splitRing[splitJ], w});
+    addFace({w, splitRing[splitI], v});
+    const ClosestPoint cp = surface_.tree.closest(p + (keptCentre - p) / 3.0);
+    setPosition(v, cp.point, cp);
+    smooth.insert(smooth.end(), splitRing.begin(), splitRing.end());
+    smooth.push_back(v);
+    smooth.push_back(w);
+    changed.push_back(w);
+    return true;
+}
+
+bool ValenceOptimizer::tryApply(const Candidate& cand, std::vector<int>& changed)
+{
+    changed.clear();
+    std::vector<int> region;  // faces around it are compared before and after
+    candidateRegion(cand, region);
+    double angleBefore, dotBefore;
+    localQuality(region, angleBefore, dotBefore);
+
+    const size_t mark = undo_.size();
+    logging_ = true;
+    std::vector<int> smooth;
+    bool ok = applyTopology(cand.first, smooth, changed);
+    if (ok) updateValences(smooth);
+    if (ok && cand.compound()) {
+        ok = applyTopology(cand.second, smooth, changed);
+        if (ok) updateValences(smooth);
+    }
+    if (ok) {
+        std::sort(smooth.begin(), smooth.end());
+        smooth.erase(std::unique(smooth.begin(), smooth.end()), smooth.end());
+        smoothLocally(smooth);
+        std::vector<int> after = region;
+        after.insert(after.end(), smooth.begin(), smooth.end());
+        double angleAfter, dotAfter;
+        localQuality(after, angleAfter, dotAfter);
+        const double minAngle = params_.minAngleDegrees * kPi / 180.0;
+        const bool folded = dotAfter < std::min(kMinNormalDot, dotBefore);
+        const bool sharper = angleAfter < minAngle && angleAfter < angleBefore - 1e-9;
+        ok = !folded && !sharper && angleAfter > 0;
+    }
+    if (!ok) {
+        rollback(mark);
+        logging_ = false;
+        changed.clear();
+        return false;
+    }
+    undo_.clear();
+    logging_ = false;
+    changed.insert(changed.end(), smooth.begin(), smooth.end());
+    return true;
+}
+
+// --- final relaxation ------------------------------------------------------------------------
+
+void ValenceOptimizer::relax()
+{
+    // Stand-in for the paper's "several FCVT iterations after valence optimization" (§4.4): the
+    // connectivity is fixed (the regularity gained stays), every vertex moves towards its
+    // one-ring centroid (CVT-like) and, with a field, down the field-alignment energy of its
+    // edges (eq. 2–3, weighted like E_field), then back onto the surface / its line.
+    const int n = static_cast<int>(pos_.size());
+    std::vector<int> neighbourFirst(n + 1, 0), neighbours;
+    {
+        Ring r;
+        for (int v = 0; v < n; ++v) {
+            if (vertexAlive_[v]) {
+                ring(v, r);
+                neighbours.insert(neighbours.end(), r.verts.begin(), r.verts.end());
+            }
+            neighbourFirst[v + 1] = static_cast<int>(neighbours.size());
+        }
+    }
+    double area = 0;
+    int alive = 0;
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
+        if (faceAlive_[f]) area += 0.5 * (pos_[faces_[f][1]] - pos_[faces_[f][0]]).cross(pos_[faces_[f][2]] - pos_[faces_[f][0]]).norm();
+    for (int v = 0; v < n; ++v) alive += vertexAlive_[v];
+    // Working scale of remesh(): mean cell area 1. E_field's gradient converted to mesh units.
+    const double workScale = area > 0 ? std::sqrt(alive / area) : 1.0;
+    const double fieldFactor = params_.fieldWeight / (2.0 * std::sqrt(3.0) * workScale);
+    const double maxStep = kMaxRelaxStep * edgeLength_;
+    const double minAngle = params_.minAngleDegrees * kPi / 180.0;
+
+    std::vector<Vec3> frameN(n, Vec3::UnitZ()), frameD(n, Vec3::UnitX());
+    std::vector<Vec3> oldPos;
+    std::vector<ClosestPoint> oldClosest;
+    std::vector<Vec3> oldNormal;
+    std::vector<double> faceAngleBefore(faces_.size()), faceDotBefore(faces_.size());
+    auto faceMeasures = [&](int f, double& angle, double& dot) {
+        const Face& t = faces_[f];
+        angle = smallestAngle(pos_[t[0]], pos_[t[1]], pos_[t[2]]);
+        const Vec3 reference = normal_[t[0]] + normal_[t[1]] + normal_[t[2]];
+        const double length = reference.norm();
+        dot = length > 0 ? faceUnitNormal(f).dot(reference) / length : -1.0;
+    };
+
+    for (int iteration = 0; iteration < params_.relaxIterations; ++iteration) {
+        if (surface_.field && params_.fieldWeight > 0) {
+#pragma omp parallel for schedule(static)
+            for (int v = 0; v < n; ++v) {
+                if (!vertexAlive_[v] || closest_[v].face < 0) continue;
+                const FieldSample s = interpolateField(surface_.input, *surface_.field, closest_[v].face, closest_[v].barycentric);
+                frameN[v] = s.normal;
+                frameD[v] = s.direction;
+            }
+        }
+        const int faceCount = static_cast<int>(faces_.size());
+#pragma omp parallel for schedule(static)
+        for (int f = 0; f < faceCount; ++f)
+            if (faceAlive_[f]) faceMeasures(f, faceAngleBefore[f], faceDotBefore[f]);
+        oldPos = pos_;
+        oldClosest = closest_;
+        oldNormal = normal_;
+        // Jacobi update: every vertex computed from the previous positions, so the result does
+        // not depend on the thread count.
+        std::vector<Vec3> newPos(pos_);
+        std::vector<ClosestPoint> newClosest(closest_);
+#pragma omp parallel for schedule(static)
+        for (int v = 0; v < n; ++v) {
+            if (!vertexAlive_[v] || role_[v] == VertexRole::Corner || vertexFaces_[v].empty()) continue;
+            Vec3 u = kRelaxFraction * (oneRingCentroid(v) - pos_[v]);
+            if (surface_.field && params_.fieldWeight > 0) {
+                Vec3 gradient = Vec3::Zero(), g;
+                for (int k = neighbourFirst[v]; k < neighbourFirst[v + 1]; ++k) {
+                    const int w = neighbours[k];
+                    const Vec3 e = pos_[w] - pos_[v];
+                    const double length = e.norm();
+                    directionDistance(e, frameN[v], frameD[v], &g);
+                    gradient -= length * g;
+                    directionDistance(-e, frameN[w], frameD[w], &g);
+                    gradient += length * g;
+                }
+                u -= fieldFactor * gradient;
+            }
+            u -= u.dot(normal_[v]) * normal_[v];
+            const double length = u.norm();
+            if (length > maxStep) u *= maxStep / length;
+            const Vec3 q = pos_[v] + u;
+            if (role_[v] == VertexRole::Free) {
+                newClosest[v] = surface_.tree.closest(q);
+                newPos[v] = newClosest[v].point;
+            } else {
+                const std::vector<Segment>& line = role_[v] == VertexRole::Boundary ? surface_.border : surface_.features;
+                if (line.empty()) continue;
+                newPos[v] = closestPointOnSegments(q, line);
+                newClosest[v] = surface_.tree.closest(newPos[v]);
+            }
+        }
+        pos_.swap(newPos);
+        closest_.swap(newClosest);
+#pragma omp parallel for schedule(static)
+        for (int v = 0; v < n; ++v)
+            if (vertexAlive_[v]) normal_[v] = surfaceNormal(closest_[v]);
+        // Safety net: a face that folds or gets a smaller angle than allowed (and than before)
+        // puts its corners back; repeated until no face is worse (the old state is valid).
+        for (;;) {
+            std::vector<int> revert;
+            for (int f = 0; f < faceCount; ++f) {
+                if (!faceAlive_[f]) continue;
+                double angle, dot;
+                faceMeasures(f, angle, dot);
+                const bool folded = dot < std::min(kMinNormalDot, faceDotBefore[f]);
+                const bool sharper = angle < minAngle && angle < faceAngleBefore[f] - 1e-9;
+                if (folded || sharper) revert.insert(revert.end(), faces_[f].begin(), faces_[f].end());
+            }
+            if (revert.empty()) break;
+            for (int v : revert) {
+                pos_[v] = oldPos[v];
+                closest_[v] = oldClosest[v];
+                normal_[v] = oldNormal[v];
+            }
+        }
+    }
+}
+
+long long ValenceOptimizer::irregularity() const
+{
+    long long sum = 0;
+    for (int v = 0; v < static_cast<int>(pos_.size()); ++v) {
+        if (!vertexAlive_[v] || vertexFaces_[v].empty()) continue;
+        const long long d = valence_[v] - target(v);
+        sum += d * d;
+    }
+    return sum;
+}
+
+double ValenceOptimizer::meanFieldDistance()
+{
+    if (!surface_.field) return 0;
+    double sum = 0;
+    long long count = 0;
+    Ring r;
+    for (int v = 0; v < static_cast<int>(pos_.size()); ++v) {
+        if (!vertexAlive_[v] || closest_[v].face < 0) continue;
+        const FieldSample s = interpolateField(surface_.input, *surface_.field, closest_[v].face, closest_[v].barycentric);
+        ring(v, r);
+        for (int w : r.verts) sum += directionDistance(pos_[w] - pos_[v], s.normal, s.direction), ++count;
+    }
+    return count > 0 ? sum / count : 0;
+}
+
+void ValenceOptimizer::compact()
+{
+    const int n = static_cast<int>(pos_.size());
+    std::vector<int> index(n, -1);
+    TriMesh out;
+    std::vector<VertexRole> roles;
+    for (int v = 0; v < n; ++v)
+        if (vertexAlive_[v]) {
+            index[v] = out.vertexCount();
+            out.vertices.push_back(pos_[v]);
+            roles.push_back(role_[v]);
+        }
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
+        if (faceAlive_[f]) out.faces.push_back({index[faces_[f][0]], index[faces_[f][1]], index[faces_[f][2]]});
+    mesh_ = std::move(out);
+    roles_ = std::move(roles);
+}
+
+int ValenceOptimizer::applyCandidates(const std::vector<Candidate>& candidates)
+{
+    std::vector<int> involved, changed;
+    Ring r;
+    int applied = 0;
+    for (const Candidate& cand : candidates) {
+        if (cand.gain >= 0) continue;
+        candidateRegion(cand, involved);
+        bool locked = false;
+        long long lastChange = 0;
+        for (int v : involved) {
+            locked |= lockStamp_[v] == round_;
+            lastChange = std::max(lastChange, changeStamp_[v]);
+        }
+        if (locked) continue;
+        const auto failure = failed_.find(cand);
+        if (failure != failed_.end() && failure->second >= lastChange) continue;  // nothing new since
+        if (!tryApply(cand, changed)) {
+            failed_[cand] = opCounter_;
+            continue;
+        }
+        ++applied;
+        ++opCounter_;  // changes are stamped after the count, failures before it
+        for (const Op& op : {cand.first, cand.second}) {
+            if (op.type == OpType::Flip) ++stats_.flips;
+            else if (op.type == OpType::Collapse) ++stats_.collapses;
+            else if (op.type == OpType::Split) ++stats_.splits;
+        }
+        // Lock the changed vertices for this round (their rings are no longer the ones the
+        // candidates were computed on) and mark their neighbourhood as changed.
+        for (int v : changed) {
+            lockStamp_[v] = round_;
+            changeStamp_[v] = opCounter_;
+            if (!vertexAlive_[v]) continue;
+            ring(v, r);
+            for (int w : r.verts) changeStamp_[w] = opCounter_;
+        }
+    }
+    return applied;
+}
+
+ValenceStats ValenceOptimizer::run()
+{
+    stats_.v6Before = computeQuality(mesh_).v6Pct;
+    stats_.verticesBefore = mesh_.vertexCount();
+    stats_.irregularityBefore = irregularity();
+    stats_.fieldDistanceBefore = meanFieldDistance();
+
+    std::vector<Candidate> candidates;
+    std::vector<Op> operations;
+    for (round_ = 1; round_ <= params_.maxRounds; ++round_) {
+        // §4.4: per irregular vertex, the operations that lower R; all of them sorted by gain
+        // (ties by kind and index), then applied greedily where nothing has changed yet. When
+        // none is left, the look-ahead pairs (an R-neutral flip, then an operation it enables).
+        int applied = 0;
+        for (int pass = 0; pass < (params_.lookAhead ? 2 : 1) && applied == 0; ++pass) {
+            const int n = static_cast<int>(pos_.size());
+            candidates.clear();
+            for (int v = 0; v < n; ++v) {
+                if (!vertexAlive_[v] || !manifold_[v] || valence_[v] == target(v)) continue;
+                if (pass == 0) {
+                    operations.clear();
+                    collectOperations(v, false, operations);
+                    for (const Op& op : operations) candidates.push_back({op.gain, op, Op{}});
+                } else {
+                    collectCompound(v, candidates);
+                }
+            }
+            std::sort(candidates.begin(), candidates.end());
+            candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+            applied = applyCandidates(candidates);
+        }
+        stats_.rounds = round_;
+        if (applied == 0) break;
+    }
+    stats_.irregularityAfter = irregularity();
+    stats_.fieldDistanceOperations = meanFieldDistance();
+    relax();
+    stats_.fieldDistanceAfter = meanFieldDistance();
+    compact();
+    stats_.v6After = computeQuality(mesh_).v6Pct;
+    stats_.verticesAfter = mesh_.vertexCount();
+    return stats_;
+}
+
+}  // namespace
+
+ValenceStats optimizeValence(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
+                             const ValenceParams& params)
+{
+    if (mesh.faces.empty()) {
+        ValenceStats stats;
+        if (roles.empty()) roles.assign(mesh.vertices.size(), VertexRole::Free);
+        return stats;
+    }
+    ValenceOptimizer optimizer(mesh, roles, surface, params);
+    return optimizer.run();
+}
+
+}  // namespace fieldcvt

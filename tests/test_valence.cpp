@@ -1,0 +1,327 @@
+// Valence optimisation (§4.4): R goes down and V6% up, the mesh stays manifold, oriented and on
+// the surface, borders and feature lines are kept, and the result is deterministic.
+#include "boundary.h"
+#include "closest_point.h"
+#include "errors.h"
+#include "field.h"
+#include "mesh_io.h"
+#include "metrics.h"
+#include "remesh.h"
+#include "test_meshes.h"
+#include "valence.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+using namespace fieldcvt;
+
+namespace {
+
+//! Equilateral triangulation of a cols x rows patch of the plane z = 0 (every interior vertex
+//! has valence 6); rows alternate their offset by half an edge.
+TriMesh hexPlane(int cols, int rows)
+{
+    TriMesh m;
+    const double h = std::sqrt(3.0) / 2;
+    for (int j = 0; j <= rows; ++j)
+        for (int i = 0; i <= cols; ++i) m.vertices.emplace_back(i + 0.5 * (j % 2), j * h, 0.0);
+    auto id = [cols](int i, int j) { return j * (cols + 1) + i; };
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < cols; ++i) {
+            if (j % 2 == 0) {
+                m.faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+                m.faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+            } else {
+                m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+                m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            }
+        }
+    return m;
+}
+
+//! Torus (R = 1, r = 0.3) triangulated like hexPlane, rows alternating their offset (m even):
+//! closed, every vertex of valence 6, angles between about 44° and 74°.
+TriMesh hexTorus(int n, int m)
+{
+    TriMesh t;
+    const double pi = 3.14159265358979323846;
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double u = 2 * pi * (i + 0.5 * (j % 2)) / n, v = 2 * pi * j / m;
+            t.vertices.emplace_back((1 + 0.3 * std::cos(v)) * std::cos(u), (1 + 0.3 * std::cos(v)) * std::sin(u), 0.3 * std::sin(v));
+        }
+    auto id = [n, m](int i, int j) { return ((j + m) % m) * n + (i + n) % n; };
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < n; ++i) {
+            if (j % 2 == 0) {
+                t.faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+                t.faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+            } else {
+                t.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+                t.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            }
+        }
+    return t;
+}
+
+//! Flips the interior edge shared by faces f and g (which must be adjacent), in place.
+void flipShared(TriMesh& m, int f, int g)
+{
+    const Face a = m.faces[f], b = m.faces[g];
+    for (int k = 0; k < 3; ++k) {
+        const int p = a[k], q = a[(k + 1) % 3], c = a[(k + 2) % 3];
+        for (int l = 0; l < 3; ++l)
+            if (b[l] == q && b[(l + 1) % 3] == p) {
+                const int d = b[(l + 2) % 3];
+                m.faces[f] = {d, q, c};
+                m.faces[g] = {c, p, d};
+                return;
+            }
+    }
+    FAIL() << "faces " << f << " and " << g << " share no edge";
+}
+
+//! R = Σ (d − o)², o = 4 on the border and 6 inside, from an independent edge count.
+long long irregularity(const TriMesh& m)
+{
+    std::map<std::pair<int, int>, int> edges;
+    for (const Face& f : m.faces)
+        for (int k = 0; k < 3; ++k) ++edges[std::minmax(f[k], f[(k + 1) % 3])];
+    std::vector<int> valence(m.vertexCount(), 0);
+    std::vector<char> border(m.vertexCount(), 0);
+    for (const auto& [e, count] : edges) {
+        ++valence[e.first], ++valence[e.second];
+        if (count == 1) border[e.first] = border[e.second] = 1;
+    }
+    long long r = 0;
+    for (int v = 0; v < m.vertexCount(); ++v) {
+        const int d = valence[v] - (border[v] ? 4 : 6);
+        r += d * d;
+    }
+    return r;
+}
+
+//! Every vertex on `surface` and every face facing the same side as the surface there.
+void expectOnSurfaceAndOriented(const TriMesh& m, const TriMesh& surface, const ClosestPointTree& tree, double tolerance)
+{
+    int offSurface = 0, reversed = 0;
+    for (const Vec3& p : m.vertices) offSurface += tree.closest(p).squaredDistance > tolerance * tolerance;
+    for (int f = 0; f < m.faceCount(); ++f) {
+        const Face& t = m.faces[f];
+        const Vec3 c = (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3;
+        const ClosestPoint cp = tree.closest(c);
+        reversed += faceNormal(m, f).dot(faceNormal(surface, cp.face)) <= 0;
+    }
+    EXPECT_EQ(offSurface, 0);
+    EXPECT_EQ(reversed, 0);
+}
+
+//! A remeshed model without valence optimisation (the input of optimizeValence in remesh()).
+TriMesh remeshedWithoutValence(const TriMesh& input, int vertices)
+{
+    RemeshParams p;
+    p.vertexCount = vertices;
+    p.lloydIterations = 10;
+    p.cvtIterations = 30;
+    p.fcvtIterations = 20;
+    p.valenceOptimization = false;
+    p.computeDistances = false;
+    return remesh(input, p).mesh;
+}
+
+}  // namespace
+
+TEST(Valence, PlantedFlipsInARegularTorusAreUndone)
+{
+    // A closed valence-6 triangulation (no border irregularity): flipping a few well separated
+    // diagonals makes two valence-5 and two valence-7 vertices each (R grows by 4, V6 drops).
+    const int n = 46, m = 16;
+    const TriMesh torus = hexTorus(n, m);
+    TriMesh mesh = torus;
+    ASSERT_EQ(irregularity(mesh), 0);
+    ASSERT_GT(computeQuality(mesh).thetaMin, 40.0);
+    for (int j : {2, 10})
+        for (int i : {4, 20, 36}) {
+            const int f = 2 * (j * n + i);
+            flipShared(mesh, f, f + 1);
+        }
+    const QualityMetrics before = computeQuality(mesh);
+    ASSERT_LT(before.v6Pct, 97.0);
+    ASSERT_EQ(irregularity(mesh), 6 * 4);
+
+    ClosestPointTree tree(torus);
+    const ValenceSurface surface{torus, tree, {}, {}, nullptr};
+    std::vector<VertexRole> roles;
+    const ValenceStats stats = optimizeValence(mesh, roles, surface, ValenceParams{});
+
+    EXPECT_EQ(stats.irregularityBefore, 6 * 4);
+    EXPECT_EQ(stats.irregularityAfter, irregularity(mesh));
+    EXPECT_EQ(stats.irregularityAfter, 0);
+    EXPECT_NEAR(stats.v6Before, before.v6Pct, 1e-9);
+    EXPECT_EQ(stats.v6After, 100.0);
+    EXPECT_EQ(computeQuality(mesh).v6Pct, 100.0);
+    EXPECT_GE(stats.flips, 6);
+    EXPECT_EQ(stats.verticesAfter, stats.verticesBefore);
+    EXPECT_EQ(roles.size(), mesh.vertices.size());
+    const TopologySummary topo = computeTopology(mesh);
+    EXPECT_TRUE(topo.manifold());
+    EXPECT_TRUE(topo.orientable);
+    EXPECT_EQ(topo.genus, 1);
+    expectOnSurfaceAndOriented(mesh, torus, tree, 1e-9);
+}
+
+TEST(Valence, RemeshedTorusStaysManifoldOrientedOnTheSurfaceAndGetsMoreRegular)
+{
+    const TriMesh input = readMesh(testmesh::resource("torus.obj"));
+    TriMesh mesh = remeshedWithoutValence(input, 800);
+    const QualityMetrics before = computeQuality(mesh);
+    const TopologySummary topoBefore = computeTopology(mesh);
+
+    ClosestPointTree tree(input);
+    const ValenceSurface surface{input, tree, boundarySegments(input), {}, nullptr};
+    std::vector<VertexRole> roles(mesh.vertices.size(), VertexRole::Free);
+    const ValenceStats stats = optimizeValence(mesh, roles, surface, ValenceParams{});
+    const QualityMetrics after = computeQuality(mesh);
+    const TopologySummary topo = computeTopology(mesh);
+
+    EXPECT_TRUE(topo.manifold());
+    EXPECT_TRUE(topo.orientable);
+    EXPECT_EQ(topo.genus, topoBefore.genus);
+    EXPECT_EQ(topo.components, topoBefore.components);
+    EXPECT_EQ(topo.boundaryLoops, 0);
+    EXPECT_EQ(topo.vertices, mesh.vertexCount());  // compacted: no unreferenced vertex
+    EXPECT_EQ(roles.size(), mesh.vertices.size());
+    expectOnSurfaceAndOriented(mesh, input, tree, 1e-6 * boundingBoxDiagonal(input));
+
+    EXPECT_LT(stats.irregularityAfter, stats.irregularityBefore);
+    EXPECT_EQ(stats.irregularityAfter, irregularity(mesh));
+    EXPECT_NEAR(stats.v6Before, before.v6Pct, 1e-9);
+    EXPECT_NEAR(stats.v6After, after.v6Pct, 1e-9);
+    EXPECT_GT(after.v6Pct, before.v6Pct + 2.0);
+    EXPECT_GT(after.thetaMin, before.thetaMin - 1.0);
+    EXPECT_GT(after.qAvg, before.qAvg - 0.005);
+    EXPECT_NEAR(mesh.vertexCount(), before.vertices, 0.03 * before.vertices);
+}
+
+TEST(Valence, OpenCylinderKeepsItsBorder)
+{
+    const TriMesh input = readMesh(testmesh::resource("cylinder.off"));
+    TriMesh mesh = remeshedWithoutValence(input, 500);
+    const TopologySummary topoBefore = computeTopology(mesh);
+    const std::vector<Segment> border = boundarySegments(input);
+    ASSERT_GT(topoBefore.boundaryLoops, 0);
+    auto borderVertices = [](const TriMesh& m) {
+        std::map<std::pair<int, int>, int> edges;
+        for (const Face& f : m.faces)
+            for (int k = 0; k < 3; ++k) ++edges[std::minmax(f[k], f[(k + 1) % 3])];
+        std::set<int> onBorder;
+        for (const auto& [e, count] : edges)
+            if (count == 1) onBorder.insert(e.first), onBorder.insert(e.second);
+        return onBorder;
+    };
+    const size_t borderCount = borderVertices(mesh).size();
+
+    ClosestPointTree tree(input);
+    const ValenceSurface surface{input, tree, border, {}, nullptr};
+    std::vector<VertexRole> roles;  // derived: border vertices become Boundary
+    const ValenceStats stats = optimizeValence(mesh, roles, surface, ValenceParams{});
+
+    const TopologySummary topo = computeTopology(mesh);
+    EXPECT_TRUE(topo.manifold());
+    EXPECT_EQ(topo.boundaryLoops, topoBefore.boundaryLoops);
+    EXPECT_EQ(topo.genus, topoBefore.genus);
+    const std::set<int> onBorder = borderVertices(mesh);
+    EXPECT_EQ(onBorder.size(), borderCount);
+    const double tolerance = 1e-9 * boundingBoxDiagonal(input);
+    for (int v : onBorder) {
+        EXPECT_EQ(roles[v], VertexRole::Boundary);
+        EXPECT_LT((closestPointOnSegments(mesh.vertices[v], border) - mesh.vertices[v]).norm(), tolerance);
+    }
+    expectOnSurfaceAndOriented(mesh, input, tree, 1e-6 * boundingBoxDiagonal(input));
+    EXPECT_LT(stats.irregularityAfter, stats.irregularityBefore);
+}
+
+TEST(Valence, FeatureLinesAndCornersAreKept)
+{
+    // A feature line along the middle row of a perturbed grid: its vertices stay on it, its
+    // edges stay, its end vertices (corners) do not move.
+    const TriMesh plane = hexPlane(12, 12);
+    TriMesh mesh = plane;
+    for (int j : {3, 8})
+        for (int i : {2, 7}) flipShared(mesh, 2 * (j * 12 + i), 2 * (j * 12 + i) + 1);
+    const int row = 6;
+    std::vector<VertexRole> roles(mesh.vertices.size(), VertexRole::Free);
+    std::vector<Segment> features;
+    for (int i = 0; i <= 12; ++i) {
+        const int v = row * 13 + i;
+        roles[v] = i == 0 || i == 12 ? VertexRole::Corner : VertexRole::Feature;
+        if (i < 12) features.push_back({plane.vertices[v], plane.vertices[v + 1]});
+    }
+    // The middle of the line is irregular too: flip one edge onto it.
+    flipShared(mesh, 2 * (row * 12 + 5), 2 * (row * 12 + 5) + 1);
+    const Vec3 corner0 = mesh.vertices[row * 13], corner1 = mesh.vertices[row * 13 + 12];
+
+    ClosestPointTree tree(plane);
+    const ValenceSurface surface{plane, tree, boundarySegments(plane), features, nullptr};
+    ValenceParams params;
+    const ValenceStats stats = optimizeValence(mesh, roles, surface, params);
+    EXPECT_LT(stats.irregularityAfter, stats.irregularityBefore);
+
+    std::vector<int> line;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+        if (roles[v] == VertexRole::Feature || roles[v] == VertexRole::Corner) line.push_back(v);
+    ASSERT_EQ(line.size(), 13u);  // never collapsed together, never split
+    std::sort(line.begin(), line.end(), [&](int a, int b) { return mesh.vertices[a].x() < mesh.vertices[b].x(); });
+    EXPECT_EQ(mesh.vertices[line.front()], corner0);
+    EXPECT_EQ(mesh.vertices[line.back()], corner1);
+    std::set<std::pair<int, int>> edges;
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) edges.insert(std::minmax(f[k], f[(k + 1) % 3]));
+    for (size_t k = 0; k < line.size(); ++k) {
+        EXPECT_NEAR(mesh.vertices[line[k]].y(), row * std::sqrt(3.0) / 2, 1e-12);
+        if (k + 1 < line.size()) EXPECT_TRUE(edges.count(std::minmax(line[k], line[k + 1]))) << "feature edge " << k;
+    }
+    EXPECT_TRUE(computeTopology(mesh).manifold());
+}
+
+TEST(Valence, DeterministicWhateverTheThreadCount)
+{
+    const TriMesh input = readMesh(testmesh::resource("torus.obj"));
+    const TriMesh start = remeshedWithoutValence(input, 400);
+    ClosestPointTree tree(input);
+    // A field makes the final relaxation use it too.
+    FieldParams fieldParams;
+    const DirectionField field = computeField(input, fieldParams);
+    const ValenceSurface surface{input, tree, {}, {}, &field};
+
+    auto run = [&](int threads) {
+        const int previous = omp_get_max_threads();
+        omp_set_num_threads(threads);
+        TriMesh mesh = start;
+        std::vector<VertexRole> roles;
+        optimizeValence(mesh, roles, surface, ValenceParams{});
+        omp_set_num_threads(previous);
+        return mesh;
+    };
+    const TriMesh a = run(1), b = run(1), c = run(2);
+    EXPECT_EQ(a.vertices, b.vertices);
+    EXPECT_EQ(a.faces, b.faces);
+    EXPECT_EQ(a.vertices, c.vertices);
+    EXPECT_EQ(a.faces, c.faces);
+}
+
+TEST(Valence, RejectsMismatchedRoles)
+{
+    const TriMesh plane = hexPlane(4, 4);
+    TriMesh mesh = plane;
+    ClosestPointTree tree(plane);
+    const ValenceSurface surface{plane, tree, {}, {}, nullptr};
+    std::vector<VertexRole> roles(3, VertexRole::Free);
+    EXPECT_THROW(optimizeValence(mesh, roles, surface, ValenceParams{}), InvalidInputError);
+}
