@@ -63,11 +63,14 @@ int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex)
     return split;
 }
 
-RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
-                     const ClosestPointTree& surface)
+namespace {
+
+// Builds the output from triangles over `n` vertex candidates (samples, or pieces of cells);
+// `seedOf` gives the sample of a candidate, `position` its output position.
+template <class SeedOf, class Position>
+RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, SeedOf seedOf, Position position)
 {
     RdtResult result;
-    const int n = static_cast<int>(seeds.size());
 
     // Count faces per undirected edge and per directed edge. An edge is kept manifold when it
     // has at most two faces and they traverse it in opposite directions.
@@ -107,24 +110,22 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::arra
         faces.swap(kept);
     }
 
-    // Compact the vertices (samples used by a face), in sample order, and project them.
-    std::vector<int> vertexOfSeed(n, -1);
+    // Compact the vertices (candidates used by a face), in candidate order, and place them.
+    std::vector<int> vertexOf(n, -1);
     for (const auto& t : faces)
-        for (int s : t) vertexOfSeed[s] = 0;
+        for (int s : t) vertexOf[s] = 0;
+    std::vector<int> candidateOfVertex;
     for (int s = 0; s < n; ++s) {
-        if (vertexOfSeed[s] < 0) {
-            ++result.droppedSeeds;
-            continue;
-        }
-        vertexOfSeed[s] = static_cast<int>(result.seedOfVertex.size());
-        result.seedOfVertex.push_back(s);
+        if (vertexOf[s] < 0) continue;
+        vertexOf[s] = static_cast<int>(candidateOfVertex.size());
+        candidateOfVertex.push_back(s);
+        result.seedOfVertex.push_back(seedOf(s));
     }
-    result.mesh.vertices.resize(result.seedOfVertex.size());
+    result.mesh.vertices.resize(candidateOfVertex.size());
 #pragma omp parallel for schedule(static)
-    for (int v = 0; v < static_cast<int>(result.seedOfVertex.size()); ++v)
-        result.mesh.vertices[v] = surface.closest(seeds[result.seedOfVertex[v]]).point;
+    for (int v = 0; v < static_cast<int>(candidateOfVertex.size()); ++v) result.mesh.vertices[v] = position(candidateOfVertex[v]);
     result.mesh.faces.reserve(faces.size());
-    for (const auto& t : faces) result.mesh.faces.push_back({vertexOfSeed[t[0]], vertexOfSeed[t[1]], vertexOfSeed[t[2]]});
+    for (const auto& t : faces) result.mesh.faces.push_back({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
     result.splitVertices = splitNonManifoldVertices(result.mesh, result.seedOfVertex);
     if (result.splitVertices > 0)
         result.warnings.push_back(std::to_string(result.splitVertices) +
@@ -134,8 +135,45 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::arra
     if (result.removedFaces > 0)
         result.warnings.push_back("removed " + std::to_string(result.removedFaces) +
                                   " restricted Delaunay faces on non-manifold edges (sampling too coarse for the input's detail)");
+    return result;
+}
+
+void warnAboutDroppedSeeds(RdtResult& result, int seedCount)
+{
+    std::vector<char> used(seedCount, 0);
+    for (int s : result.seedOfVertex) used[s] = 1;
+    result.droppedSeeds = seedCount - static_cast<int>(std::count(used.begin(), used.end(), 1));
     if (result.droppedSeeds > 0)
         result.warnings.push_back(std::to_string(result.droppedSeeds) + " samples are in no output triangle");
+}
+
+}  // namespace
+
+RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
+                     const ClosestPointTree& surface)
+{
+    RdtResult result = buildRdt(
+        static_cast<int>(seeds.size()), triangles, [](int s) { return s; },
+        [&](int s) { return surface.closest(seeds[s]).point; });
+    warnAboutDroppedSeeds(result, static_cast<int>(seeds.size()));
+    return result;
+}
+
+RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const ClosestPointTree& surface)
+{
+    const int n = static_cast<int>(seeds.size());
+    std::vector<int> pieces(n, 0);
+    for (int s : rvd.pieceSeed) ++pieces[s];
+    RdtResult result = buildRdt(
+        static_cast<int>(rvd.pieceSeed.size()), rvd.pieceTriangles, [&](int p) { return rvd.pieceSeed[p]; },
+        [&](int p) {
+            // One piece: the closest point on the whole surface, as for a plain RDT; several:
+            // the closest point on this piece (the surface's may be on another sheet).
+            const int s = rvd.pieceSeed[p];
+            return pieces[s] == 1 ? surface.closest(seeds[s]).point : rvd.piecePoint[p];
+        });
+    result.multiPieceSeeds = static_cast<int>(std::count_if(pieces.begin(), pieces.end(), [](int c) { return c > 1; }));
+    warnAboutDroppedSeeds(result, n);
     return result;
 }
 

@@ -2,6 +2,7 @@
 // The output mesh: the restricted Delaunay triangulation (RDT), dual of the RVD (§3.1).
 #include "closest_point.h"
 #include "mesh.h"
+#include "rvd.h"
 
 #include <array>
 #include <string>
@@ -15,6 +16,7 @@ struct RdtResult {
     int droppedSeeds = 0;           //!< samples in no triangle (empty or isolated cells)
     int removedFaces = 0;           //!< faces removed to keep the output edge-manifold
     int splitVertices = 0;          //!< extra vertices made by splitting non-manifold vertices
+    int multiPieceSeeds = 0;        //!< samples whose restricted cell is in several pieces (one vertex each)
     std::vector<std::string> warnings;
 };
 
@@ -28,6 +30,13 @@ int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex);
 
 RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
                      const ClosestPointTree& surface);
+
+//! The same from the RVD's triangles on cell pieces (RvdOptions::triangles): every connected
+//! piece of a restricted cell is its own vertex (Geogram's multi-nerve case), so a cell that
+//! falls apart on thin parts or near-touching sheets does not glue them together. A sample with
+//! one piece is placed at its closest point on the surface; a sample with several, at its
+//! closest point on each piece.
+RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const ClosestPointTree& surface);
 
 
 }  // namespace fieldcvt

@@ -1,5 +1,6 @@
 #include "rvd.h"
 
+#include "closest_point.h"
 #include "errors.h"
 
 #include <Eigen/Geometry>
@@ -53,15 +54,42 @@ struct CellPiece {
     Vec3 boundaryMoment;
 };
 
+// The polygon of one cell in one input triangle, for the connected pieces of the cells
+// (RvdOptions::triangles): its seed, its triangle and the closest point of the seed on it.
+struct Fragment {
+    int seed;
+    int face;
+    Vec3 point;
+    double distance2;
+};
+
+// Fragment `fragment` (chunk-local) has an edge on the input edge shared with `face`.
+struct FragmentLink {
+    int fragment;
+    int face;
+};
+
+// An RDT triangle found in input triangle `face`: corners are chunk-local fragment indices, or
+// -1 - seed when no fragment of that seed is in `face` (degenerate: the RVD vertex is on its
+// border).
+struct RawTriangle {
+    std::array<int, 3> corner;
+    int face;
+};
+
 struct ChunkOutput {
     std::vector<CellPiece> pieces;
     std::vector<RvdEdge> edges;
-    std::vector<std::array<int, 3>> triangles;
+    std::vector<Fragment> fragments;
+    std::vector<FragmentLink> links;
+    std::vector<RawTriangle> triangles;
     long long clipped = 0;
     void clear()
     {
         pieces.clear();
         edges.clear();
+        fragments.clear();
+        links.clear();
         triangles.clear();
         clipped = 0;
     }
@@ -119,6 +147,7 @@ struct RestrictedVoronoiDiagram::Impl {
     const TriMesh& surface;
     std::vector<Vec3> unitNormals;  // per input face
     std::vector<unsigned char> borderEdges;  // per input face: bit e set if edge e has no other face
+    std::vector<int> neighbourFace;          // per input face edge (3f + e): the face across it, -1 if none or several
     std::vector<int> vertexOrder;            // input vertices in Morton order
     std::vector<int> faceOrder;              // input faces in Morton order of their centroids
     std::vector<ChunkOutput> chunks;
@@ -135,6 +164,8 @@ struct RestrictedVoronoiDiagram::Impl {
     std::vector<int> edgeStart;        // work space of the edge merge
     std::vector<RvdEdge> edgeBuffer;
     int storedNeighbours = 0;
+
+    void buildPieces(RvdResult& result) const;
 
     explicit Impl(const TriMesh& s) : surface(s)
     {
@@ -157,10 +188,15 @@ struct RestrictedVoronoiDiagram::Impl {
             for (int e = 0; e < 3; ++e) edges.push_back({std::minmax(s.faces[f][e], s.faces[f][(e + 1) % 3]), 3 * f + e});
         std::sort(edges.begin(), edges.end());
         borderEdges.assign(s.faces.size(), 0);
+        neighbourFace.assign(3 * s.faces.size(), -1);
         for (size_t r = 0; r < edges.size();) {
             size_t q = r;
             while (q < edges.size() && edges[q].first == edges[r].first) ++q;
             if (q - r == 1) borderEdges[edges[r].second / 3] |= static_cast<unsigned char>(1u << (edges[r].second % 3));
+            if (q - r == 2) {
+                neighbourFace[edges[r].second] = edges[r + 1].second / 3;
+                neighbourFace[edges[r + 1].second] = edges[r].second / 3;
+            }
             r = q;
         }
     }
@@ -374,6 +410,7 @@ struct RestrictedVoronoiDiagram::Impl {
             whole.point[0] = a, whole.point[1] = b, whole.point[2] = c;
             whole.label[0] = -1, whole.label[1] = -2, whole.label[2] = -3;
             integrate(whole, s0, t, out);
+            if (options.triangles) recordFragment(whole, s0, t, out);
             return;
         }
         // Otherwise start from a seed whose cell meets the triangle: the cells of its corners,
@@ -388,6 +425,8 @@ struct RestrictedVoronoiDiagram::Impl {
         bool treeQueried = false;
         int nextCandidate = 0;
         bool anyPiece = false;
+        const int firstFragment = static_cast<int>(out.fragments.size());
+        const int firstTriangle = static_cast<int>(out.triangles.size());
 
         scratch.stack.clear();
         scratch.visited.clear();
@@ -416,6 +455,7 @@ struct RestrictedVoronoiDiagram::Impl {
             anyPiece = true;
 
             integrate(poly, i, t, out);
+            const int fragment = options.triangles ? recordFragment(poly, i, t, out) : -1;
             for (int k = 0; k < poly.size; ++k) {
                 const int j = poly.label[k];
                 if (j < 0) continue;
@@ -432,9 +472,44 @@ struct RestrictedVoronoiDiagram::Impl {
                 // around i, so (i, j, l) is a restricted Delaunay triangle with the input's
                 // orientation.
                 const int l = poly.label[(k + 1) % poly.size];
-                if (options.triangles && l >= 0 && l != j) out.triangles.push_back(canonicalTriangle(i, j, l));
+                if (options.triangles && l >= 0 && l != j) out.triangles.push_back({{fragment, -1 - j, -1 - l}, t});
             }
         }
+        // The other two corners of each RDT triangle: the fragments of their seeds in this
+        // input triangle (the RVD vertex is inside it, so they exist but in degenerate cases).
+        const int fragmentEnd = static_cast<int>(out.fragments.size());
+        for (size_t r = firstTriangle; r < out.triangles.size(); ++r)
+            for (int c = 1; c < 3; ++c) {
+                const int seed = -1 - out.triangles[r].corner[c];
+                for (int g = firstFragment; g < fragmentEnd; ++g)
+                    if (out.fragments[g].seed == seed) {
+                        out.triangles[r].corner[c] = g;
+                        break;
+                    }
+            }
+    }
+
+    // Records the polygon of cell i in input triangle t as a fragment: the closest point of x_i
+    // on it, and a link across each input edge it reaches (the polygon of cell i in the face on
+    // the other side shares that edge's part inside the cell, so the two are connected).
+    // Returns the fragment's chunk-local index.
+    int recordFragment(const Polygon& poly, int i, int t, ChunkOutput& out) const
+    {
+        const Vec3& xi = (*seeds)[i];
+        Fragment fragment{i, t, poly.point[0], (poly.point[0] - xi).squaredNorm()};
+        for (int k = 1; k + 1 < poly.size; ++k) {
+            const Vec3 q = closestPointOnTriangle(xi, poly.point[0], poly.point[k], poly.point[k + 1]);
+            const double d2 = (q - xi).squaredNorm();
+            if (d2 < fragment.distance2) fragment.point = q, fragment.distance2 = d2;
+        }
+        const int index = static_cast<int>(out.fragments.size());
+        out.fragments.push_back(fragment);
+        for (int k = 0; k < poly.size; ++k) {
+            if (poly.label[k] >= 0) continue;
+            const int across = neighbourFace[3 * t + (-1 - poly.label[k])];
+            if (across >= 0) out.links.push_back({index, across});
+        }
+        return index;
     }
 
     // Accumulates mass, first moment and ∫||x - x_i||² over the polygon (eq. 1, ρ = 1) by a
@@ -519,7 +594,6 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
         }
         result.clippedPolygons += out.clipped;
         if (options.edges) result.edges.insert(result.edges.end(), out.edges.begin(), out.edges.end());
-        if (options.triangles) result.triangles.insert(result.triangles.end(), out.triangles.begin(), out.triangles.end());
     }
     if (options.edges) {
         // Sum the pieces of each shared edge (an RVD edge crosses several input triangles):
@@ -552,10 +626,97 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
         for (size_t i = 0; i < n; ++i)
             result.edges.insert(result.edges.end(), bucketed.begin() + start[i], bucketed.begin() + start[i] + kept[i]);
     }
-    if (options.triangles) {
-        std::sort(result.triangles.begin(), result.triangles.end());
-        result.triangles.erase(std::unique(result.triangles.begin(), result.triangles.end()), result.triangles.end());
+    result.pieceSeed.clear();
+    result.piecePoint.clear();
+    result.pieceTriangles.clear();
+    if (options.triangles) m.buildPieces(result);
+}
+
+void RestrictedVoronoiDiagram::Impl::buildPieces(RvdResult& result) const
+{
+    // Global fragment numbering: chunk order, then order within the chunk.
+    std::vector<int> chunkStart(chunks.size() + 1, 0);
+    for (size_t c = 0; c < chunks.size(); ++c) chunkStart[c + 1] = chunkStart[c] + static_cast<int>(chunks[c].fragments.size());
+    const int fragmentCount = chunkStart.back();
+    std::vector<Fragment> fragments;
+    fragments.reserve(fragmentCount);
+    for (const ChunkOutput& out : chunks) fragments.insert(fragments.end(), out.fragments.begin(), out.fragments.end());
+    // The fragments of one input triangle are consecutive.
+    std::vector<int> faceFirst(surface.faces.size(), -1), faceEnd(surface.faces.size(), -1);
+    for (int g = 0; g < fragmentCount; ++g) {
+        const int f = fragments[g].face;
+        if (faceFirst[f] < 0) faceFirst[f] = g;
+        faceEnd[f] = g + 1;
     }
+
+    // Union-find of the fragments of one cell across shared input edges.
+    std::vector<int> parent(fragmentCount);
+    for (int g = 0; g < fragmentCount; ++g) parent[g] = g;
+    auto find = [&](int g) {
+        while (parent[g] != g) g = parent[g] = parent[parent[g]];
+        return g;
+    };
+    for (size_t c = 0; c < chunks.size(); ++c)
+        for (const FragmentLink& link : chunks[c].links) {
+            const int g = chunkStart[c] + link.fragment;
+            for (int h = faceFirst[link.face]; h >= 0 && h < faceEnd[link.face]; ++h)
+                if (fragments[h].seed == fragments[g].seed) {
+                    const int a = find(g), b = find(h);
+                    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the first fragment
+                    break;
+                }
+        }
+
+    // Pieces sorted by seed, then by first fragment; each at its fragment nearest to the seed.
+    const int seedCount = static_cast<int>(seeds->size());
+    std::vector<int> pieceOfRoot(fragmentCount, -1);
+    std::vector<int> firstOfSeed(seedCount + 1, 0);
+    for (int g = 0; g < fragmentCount; ++g)
+        if (find(g) == g) ++firstOfSeed[fragments[g].seed + 1];
+    for (int s = 0; s < seedCount; ++s) firstOfSeed[s + 1] += firstOfSeed[s];
+    const int pieceCount = firstOfSeed.back();
+    result.pieceSeed.resize(pieceCount);
+    result.piecePoint.resize(pieceCount);
+    std::vector<int> fill(firstOfSeed.begin(), firstOfSeed.end() - 1);
+    std::vector<double> nearest(pieceCount);
+    for (int g = 0; g < fragmentCount; ++g) {
+        const int root = find(g);
+        if (root == g) {
+            const int p = fill[fragments[g].seed]++;
+            pieceOfRoot[g] = p;
+            result.pieceSeed[p] = fragments[g].seed;
+            result.piecePoint[p] = fragments[g].point;
+            nearest[p] = fragments[g].distance2;
+        } else {
+            const int p = pieceOfRoot[root];  // the root comes first, so it is numbered
+            if (fragments[g].distance2 < nearest[p]) result.piecePoint[p] = fragments[g].point, nearest[p] = fragments[g].distance2;
+        }
+    }
+
+    // RDT triangles on pieces. A corner without a fragment in the triangle of its RVD vertex
+    // (the vertex is on the triangle's border) takes its seed's piece in a neighbouring triangle,
+    // else the seed's first piece.
+    auto pieceNear = [&](int seed, int face) {
+        for (int e = 0; e < 3; ++e) {
+            const int across = neighbourFace[3 * face + e];
+            for (int h = across >= 0 ? faceFirst[across] : -1; h >= 0 && h < faceEnd[across]; ++h)
+                if (fragments[h].seed == seed) return pieceOfRoot[find(h)];
+        }
+        return firstOfSeed[seed];
+    };
+    for (size_t c = 0; c < chunks.size(); ++c)
+        for (const RawTriangle& raw : chunks[c].triangles) {
+            std::array<int, 3> t;
+            for (int k = 0; k < 3; ++k)
+                t[k] = raw.corner[k] >= 0 ? pieceOfRoot[find(chunkStart[c] + raw.corner[k])] : pieceNear(-1 - raw.corner[k], raw.face);
+            result.pieceTriangles.push_back(canonicalTriangle(t[0], t[1], t[2]));
+        }
+    std::sort(result.pieceTriangles.begin(), result.pieceTriangles.end());
+    result.pieceTriangles.erase(std::unique(result.pieceTriangles.begin(), result.pieceTriangles.end()), result.pieceTriangles.end());
+    for (const std::array<int, 3>& t : result.pieceTriangles)
+        result.triangles.push_back(canonicalTriangle(result.pieceSeed[t[0]], result.pieceSeed[t[1]], result.pieceSeed[t[2]]));
+    std::sort(result.triangles.begin(), result.triangles.end());
+    result.triangles.erase(std::unique(result.triangles.begin(), result.triangles.end()), result.triangles.end());
 }
 
 }  // namespace fieldcvt

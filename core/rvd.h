@@ -14,7 +14,9 @@ namespace fieldcvt {
 
 struct RvdOptions {
     bool edges = false;      //!< fill RvdResult::edges
-    bool triangles = false;  //!< fill RvdResult::triangles
+    //! Fill RvdResult::triangles and the connected pieces of the cells (pieceSeed, piecePoint,
+    //! pieceTriangles).
+    bool triangles = false;
     bool boundary = false;   //!< fill RvdResult::boundaryLength / boundaryMoment
 };
 
@@ -36,6 +38,18 @@ struct RvdResult {
     //! One triangle (i, j, k) per RVD vertex where three cells meet, oriented like the input
     //! surface, listed once (sorted, duplicates removed).
     std::vector<std::array<int, 3>> triangles;
+    //! Connected pieces of the restricted cells on the surface (RvdOptions::triangles). A cell
+    //! is convex in space but its restriction to the surface can fall apart (thin parts,
+    //! near-touching sheets: Geogram's multi-nerve case); its polygons in input triangles that
+    //! share an edge are one piece. Pieces are sorted by seed, then by where they first occur
+    //! (Morton order of the input triangles), so the numbering does not depend on threads.
+    std::vector<int> pieceSeed;
+    //! Per piece, the closest point of its seed on the piece.
+    std::vector<Vec3> piecePoint;
+    //! The restricted Delaunay triangles on pieces (indices into pieceSeed): every piece meeting
+    //! an RVD vertex is a corner. Same orientation and order rules as `triangles`, which is
+    //! this list with pieces replaced by their seeds.
+    std::vector<std::array<int, 3>> pieceTriangles;
     //! Number of (triangle, cell) polygons clipped; a cost figure for benchmarks.
     long long clippedPolygons = 0;
 
