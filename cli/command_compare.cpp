@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cctype>
 #include <climits>
 #include <optional>
 #include <cmath>
@@ -46,7 +47,8 @@ void printUsage()
     const RemeshParams cvt = cvtParams(fcvt);
     std::printf(
         "Usage: fcvt compare IN --vertices N [--seed S] [--lambda L] [--field F] [--threads T] [--no-valence]\n"
-        "                    [--no-meshlab] [--meshlabserver PATH] [--meshlab-iterations K] [--json] [--quiet]\n"
+        "                    [--no-meshlab] [--meshlabserver PATH] [--meshlab-iterations K] [--save PREFIX]\n"
+        "                    [--json] [--quiet]\n"
         "\n"
         "Remeshes IN with each method and prints one row per method in the layout of the paper's\n"
         "Table 2:\n"
@@ -76,6 +78,8 @@ void printUsage()
         "  --no-meshlab   no meshlab-isotropic row, even when meshlabserver is available\n"
         "  --meshlabserver PATH  the meshlabserver to run (an error if it is not executable)\n"
         "  --meshlab-iterations K  iterations of the built-in remeshing, 1..1000 (default %d)\n"
+        "  --save PREFIX  also write each row's mesh to PREFIX-cvt.ply, PREFIX-fcvt.ply,\n"
+        "                 PREFIX-meshlab-isotropic.ply\n"
         "  --json         print the rows as a JSON array (metrics keys of 'fcvt metrics --json';\n"
         "                 d_rms and d_h unscaled)\n"
         "  --quiet        no progress output\n"
@@ -182,7 +186,7 @@ std::optional<Row> meshlabRow(const std::string& server, const TriMesh& input, i
 
 int runCompare(const std::vector<std::string>& args)
 {
-    const Arguments a(args, {"vertices", "seed", "lambda", "field", "threads", "meshlabserver", "meshlab-iterations"},
+    const Arguments a(args, {"vertices", "seed", "lambda", "field", "threads", "meshlabserver", "meshlab-iterations", "save"},
                       {"json", "quiet", "help", "no-meshlab", "no-valence"});
     if (a.flag("help")) {
         printUsage();
@@ -210,6 +214,14 @@ int runCompare(const std::vector<std::string>& args)
         if (server.empty() && a.has("meshlabserver"))
             throw UsageError("--meshlabserver " + *a.text("meshlabserver") + ": not an executable file");
     }
+
+    const std::optional<std::string> savePrefix = a.text("save");
+    const auto savePath = [&](const std::string& method) {
+        std::string lower = method;
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return *savePrefix + "-" + lower + ".ply";
+    };
+    if (savePrefix) checkOutputPath(savePath("fcvt"));
 
     MeshReadInfo readInfo;
     VertexAttributes attributes;
@@ -250,6 +262,8 @@ int runCompare(const std::vector<std::string>& args)
                 std::fprintf(stderr, "fcvt: %s: %s: %s\n", row.meshlab ? "note" : "warning", row.method.c_str(), w.c_str());
         for (const std::string& n : notes) std::fprintf(stderr, "fcvt: warning: %s\n", n.c_str());
     }
+    if (savePrefix)
+        for (const Row& row : rows) writeMesh(savePath(row.method), row.result.mesh);
     if (a.flag("json")) std::printf("%s\n", rowsJson(rows).dump(2).c_str());
     else printTable(rows);
     return 0;

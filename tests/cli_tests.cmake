@@ -71,3 +71,10 @@ if(FCVT_CLI_XVFB_RUN AND EXISTS /usr/bin/meshlabserver)
             ${FCVT_RESOURCES}/torus.obj 600)
   set_tests_properties(cli_compare_meshlab PROPERTIES LABELS "cli;meshlab" TIMEOUT 900)
 endif()
+
+# Progress output: a bar on a terminal (through a pseudo-terminal), plain lines on a pipe, none
+# with --quiet (issue 7 item 6).
+add_test(NAME cli_progress
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_progress.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}
+          ${FCVT_CLI_WORK}/progress)
+set_tests_properties(cli_progress PROPERTIES LABELS "cli" TIMEOUT 600)
