@@ -2,7 +2,8 @@
 # The issue-5 parameters of the remeshing filter fail cleanly (errorMessage in the log, no
 # output, no abort): featureAngle out of 0..180; adaptive on a layer without per-vertex quality;
 # adaptive with a quality that is not > 0 everywhere. And featureSelection on a mesh without a
-# selection only warns. Usage: invalid_new_parameters.sh SOURCE_DIR PLUGIN_SO WORK_DIR
+# selection only warns, while after "Conditional Face Selection" it logs the selection's border
+# edges and runs. Usage: invalid_new_parameters.sh SOURCE_DIR PLUGIN_SO WORK_DIR
 set -euo pipefail
 FCVT_SOURCE_DIR="$1"; plugin="$2"; work="$3"
 source "$FCVT_SOURCE_DIR/tests/meshlab/common.sh"
@@ -58,4 +59,18 @@ run_meshlabserver "$server" "$work/out/selection.txt" -i "$work/out/torus.off" -
 [ "$MLS_RC" -eq 0 ] || fail "featureSelection without a selection: meshlabserver exited with $MLS_RC"
 grep -q "featureSelection is on but the selection of 'torus.off' (0 of" "$work/out/selection.txt" \
   || fail "featureSelection without a selection: no warning"
+# A selection (faces with all corners at x > 0): its border becomes feature edges.
+sel="$work/out/selected.mlx"
+{
+  echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
+  echo ' <filter name="Conditional Face Selection">'
+  echo '  <Param type="RichString" name="condSelect" value="(x0 &gt; 0) &amp;&amp; (x1 &gt; 0) &amp;&amp; (x2 &gt; 0)" description="boolean function" tooltip="type a boolean function that will be evaluated in order to select a subset of faces&lt;br&gt;"/>'
+  echo ' </filter>'
+  sed -n '/<filter /,/<\/filter>/p' "$mlx"
+  echo '</FilterScript>'
+} > "$sel"
+run_meshlabserver "$server" "$work/out/selected.txt" -i "$work/out/torus.off" -o "$work/out/selected.ply" -s "$sel"
+[ "$MLS_RC" -eq 0 ] || fail "featureSelection with a selection: meshlabserver exited with $MLS_RC"
+grep -Eq "FCVT features: [1-9][0-9]* edges on the border of the [1-9][0-9]* selected faces" "$work/out/selected.txt" \
+  || fail "featureSelection with a selection: no feature edges logged"
 echo "PASS"
