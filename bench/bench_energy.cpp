@@ -5,6 +5,9 @@
 #include "mesh_check.h"
 #include "mesh_io.h"
 #include "optimize.h"
+#include "rdt.h"
+#include "field.h"
+#include "closest_point.h"
 #include "remesh.h"
 #include "rvd.h"
 #include "sampling.h"
@@ -13,6 +16,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <map>
 
 using namespace fieldcvt;
 
@@ -67,6 +71,114 @@ void BM_RvdWithEdgesBunny5000(benchmark::State& state)
     state.counters["edges"] = static_cast<double>(result.edges.size());
 }
 BENCHMARK(BM_RvdWithEdgesBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The regime of the scale run (nefertiti x 16 faces, 100k samples): about 16 input triangles
+// per cell, most of them wholly inside one cell. bunny.obj subdivided once (1 -> 4) with 17k
+// Lloyd-relaxed samples.
+TriMesh subdivide(const TriMesh& mesh)
+{
+    TriMesh fine;
+    fine.vertices = mesh.vertices;
+    std::map<std::pair<int, int>, int> midpoint;
+    auto mid = [&](int a, int b) {
+        const auto key = std::minmax(a, b);
+        const auto it = midpoint.find(key);
+        if (it != midpoint.end()) return it->second;
+        fine.vertices.push_back(0.5 * (mesh.vertices[a] + mesh.vertices[b]));
+        return midpoint[key] = fine.vertexCount() - 1;
+    };
+    for (const Face& f : mesh.faces) {
+        const int ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+        fine.faces.push_back({f[0], ab, ca});
+        fine.faces.push_back({f[1], bc, ab});
+        fine.faces.push_back({f[2], ca, bc});
+        fine.faces.push_back({ab, bc, ca});
+    }
+    return fine;
+}
+
+struct DenseSetup {
+    TriMesh surface;
+    std::vector<Vec3> seeds;
+    DirectionField field;
+    DenseSetup()
+    {
+        InputReport report;
+        surface = subdivide(prepareInput(readMesh(std::string(FCVT_RESOURCES_DIR) + "/bunny.obj"), report));
+        const int samples = surface.faceCount() / 16;
+        const double scale = std::sqrt(samples / surfaceArea(surface));
+        for (Vec3& p : surface.vertices) p *= scale;
+        seeds = sampleSurfaceUniform(surface, samples, 1);
+        EnergyFunction energy(surface);
+        lloydRelaxation(energy, surface, seeds, 5, 1);
+        field = computeField(surface, FieldParams{});
+    }
+};
+
+const DenseSetup& dense()
+{
+    static const DenseSetup setup;
+    return setup;
+}
+
+// One CVT evaluation (RVD without edges), as in the Lloyd and CVT stages.
+void BM_CvtEvaluationDense(benchmark::State& state)
+{
+    const DenseSetup& setup = dense();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    EnergyFunction energy(setup.surface);
+    Eigen::VectorXd x = flatten(setup.seeds), gradient;
+    for (auto _ : state) benchmark::DoNotOptimize(energy.evaluate(x, gradient).total);
+    state.counters["faces"] = setup.surface.faceCount();
+    state.counters["samples"] = static_cast<double>(setup.seeds.size());
+}
+BENCHMARK(BM_CvtEvaluationDense)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One FCVT evaluation: RVD with edges, field frames at the samples, E_field. The samples move
+// a little between evaluations, as during L-BFGS (two positions alternate).
+void BM_FcvtEvaluationDense(benchmark::State& state)
+{
+    const DenseSetup& setup = dense();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    EnergyFunction energy(setup.surface);
+    ClosestPointTree tree(setup.surface);
+    energy.setField(&setup.field, &tree, 0.002);
+    Eigen::VectorXd x0 = flatten(setup.seeds), gradient;
+    Eigen::VectorXd x1 = x0;
+    for (Eigen::Index k = 0; k < x1.size(); ++k) x1[k] += 1e-3 * std::sin(static_cast<double>(k));
+    bool odd = false;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(energy.evaluate(odd ? x1 : x0, gradient).total);
+        odd = !odd;
+    }
+}
+BENCHMARK(BM_FcvtEvaluationDense)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The extrinsic 6-RoSy field on the dense surface (140k vertices).
+void BM_FieldDense(benchmark::State& state)
+{
+    const DenseSetup& setup = dense();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    for (auto _ : state) benchmark::DoNotOptimize(computeField(setup.surface, FieldParams{}).directions.data());
+}
+BENCHMARK(BM_FieldDense)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The final RVD with its triangles and cell pieces, and the output mesh.
+void BM_RdtDense(benchmark::State& state)
+{
+    const DenseSetup& setup = dense();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    RestrictedVoronoiDiagram rvd(setup.surface);
+    ClosestPointTree tree(setup.surface);
+    RvdResult result;
+    RvdOptions options;
+    options.triangles = true;
+    for (auto _ : state) {
+        rvd.compute(setup.seeds, options, result);
+        benchmark::DoNotOptimize(extractRdt(setup.seeds, result.triangles, tree).mesh.faces.data());
+    }
+}
+BENCHMARK(BM_RdtDense)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_RemeshBunny5000(benchmark::State& state)
 {
