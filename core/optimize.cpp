@@ -13,6 +13,13 @@
 
 namespace fieldcvt {
 
+namespace {
+// Lloyd warm-up: cells below this fraction of the mean cell are re-seeded at random.
+constexpr double kTinyCellFraction = 1.0 / 16;
+// ... when more than this fraction of all cells are that small.
+constexpr double kUnevenFraction = 0.01;
+}  // namespace
+
 void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations,
                      std::uint64_t seed)
 {
@@ -22,13 +29,21 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
         x = flatten(seeds);
         energy.evaluate(x, gradient);
         const RvdResult& rvd = energy.lastDiagram();
+        double totalMass = 0;
+        for (double m : rvd.mass) totalMass += m;
+        // A seed whose cell is empty goes to a random point of the surface. So does a seed whose
+        // cell is tiny when many are (a clustered start): random points land in the large cells,
+        // in proportion to their size, which spreads the cluster in a few steps where plain Lloyd
+        // steps would take hundreds (§5, "Uneven initial sampling"). An area-uniform start has
+        // almost no such cells and is left to plain Lloyd steps.
+        const double tiny = kTinyCellFraction * totalMass / double(seeds.size());
+        const auto tinyCells = std::count_if(rvd.mass.begin(), rvd.mass.end(), [&](double m) { return m <= tiny; });
+        const bool uneven = double(tinyCells) > kUnevenFraction * double(seeds.size());
         for (size_t i = 0; i < seeds.size(); ++i) {
-            if (rvd.mass[i] > 0) {
+            if (rvd.mass[i] > (uneven ? tiny : 0.0))
                 seeds[i] = rvd.moment[i] / rvd.mass[i];
-            } else {
-                // A lost seed (empty cell): put it back on the surface at a random place.
+            else
                 seeds[i] = sampleSurfaceUniform(surface, 1, rng())[0];
-            }
         }
     }
 }

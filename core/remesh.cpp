@@ -30,8 +30,16 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 
 void validate(const RemeshParams& p)
 {
-    if (p.vertexCount < 4) throw InvalidInputError("vertex count must be at least 4 (got " + std::to_string(p.vertexCount) + ")");
-    if (p.vertexCount > 50000000) throw InvalidInputError("vertex count " + std::to_string(p.vertexCount) + " is too large (at most 50000000)");
+    if (p.initialSamples.empty()) {
+        if (p.vertexCount < 4) throw InvalidInputError("vertex count must be at least 4 (got " + std::to_string(p.vertexCount) + ")");
+        if (p.vertexCount > 50000000)
+            throw InvalidInputError("vertex count " + std::to_string(p.vertexCount) + " is too large (at most 50000000)");
+    } else {
+        if (p.initialSamples.size() < 4)
+            throw InvalidInputError("at least 4 initial samples are needed (got " + std::to_string(p.initialSamples.size()) + ")");
+        for (const Vec3& x : p.initialSamples)
+            if (!x.allFinite()) throw InvalidInputError("an initial sample has a NaN or infinite coordinate");
+    }
     if (!std::isfinite(p.lambda) || p.lambda < 0) throw InvalidInputError("lambda must be a finite number >= 0");
     if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
         throw InvalidInputError("iteration counts must be >= 0");
@@ -126,6 +134,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
 
     RemeshResult result;
     Pipeline pipeline(progress, result);
+    const int sampleCount = params.initialSamples.empty() ? params.vertexCount : static_cast<int>(params.initialSamples.size());
 
     TriMesh surface;
     std::vector<int> cleanIndex;  // input vertex -> surface vertex
@@ -141,7 +150,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         Vec3 lo = surface.vertices[0], hi = surface.vertices[0];
         for (const Vec3& p : surface.vertices) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
         frame.centre = 0.5 * (lo + hi);
-        frame.scale = std::sqrt(params.vertexCount / area);
+        frame.scale = std::sqrt(sampleCount / area);
         for (Vec3& p : surface.vertices) p = frame.toWork(p);
     });
 
@@ -204,7 +213,14 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
 
     std::vector<Vec3> seeds;
     std::vector<SampleConstraint> sampleRoles;
-    pipeline.run("sampling", [&] { seeds = sampleSurfaceUniform(surface, params.vertexCount, params.seed); });
+    pipeline.run("sampling", [&] {
+        if (params.initialSamples.empty()) {
+            seeds = sampleSurfaceUniform(surface, params.vertexCount, params.seed);
+        } else {
+            seeds.clear();
+            for (const Vec3& x : params.initialSamples) seeds.push_back(frame.toWork(x));
+        }
+    });
     auto lbfgs = [&](int iterations) {
         OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{iterations});
         result.warnings.insert(result.warnings.end(), stats.warnings.begin(), stats.warnings.end());
@@ -249,11 +265,11 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         RvdOptions options;
         options.triangles = true;
         const RvdResult& rvd = energy.diagram(seeds, options);
-        RdtResult rdt = extractRdt(seeds, rvd.triangles, tree);
+        RdtResult rdt = extractRdt(seeds, rvd, tree);  // on cell pieces (multi-nerve RDT)
         result.warnings.insert(result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         result.mesh = std::move(rdt.mesh);
         if (result.mesh.faces.empty())
-            throw SolverError("no restricted Delaunay triangle survives with " + std::to_string(params.vertexCount) +
+            throw SolverError("no restricted Delaunay triangle survives with " + std::to_string(sampleCount) +
                               " samples on this surface: use more vertices");
         for (int seed : rdt.seedOfVertex)
             roles.push_back(size_t(seed) < sampleRoles.size() ? roleOf(sampleRoles[size_t(seed)]) : VertexRole::Free);
@@ -263,7 +279,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             stage = "valence";
             pipeline.report(stage, 92);
             const ValenceSurface on{surface, tree, border, features.segments, useField ? &field : nullptr};
-            (void)on;  // TEMPORARY until core/valence.cpp lands: result.valence = optimizeValence(result.mesh, roles, on, params.valence);
+            result.valence = optimizeValence(result.mesh, roles, on, params.valence);
         });
     }
     if (useField) {

@@ -36,6 +36,10 @@ struct RemeshParams {
     FieldSource fieldSource = FieldSource::Extrinsic;  //!< the 6-RoSy field E_field aligns to
     //! FieldSource::User: one vector per input vertex (projected on the tangent plane).
     std::vector<Vec3> userDirections;
+    //! Starting samples (input units) instead of the random area-uniform ones, e.g. a previous
+    //! result or a deliberately uneven start; when given, their number replaces vertexCount. The
+    //! Lloyd warm-up makes any start work (§5, "Uneven initial sampling", Fig. 9).
+    std::vector<Vec3> initialSamples;
     std::uint64_t seed = 1;        //!< seed of the initial sampling and of the field
     int threads = 0;               //!< OpenMP threads, 0 = runtime default
     //! Wall-clock budget of the optimisation (Lloyd, CVT, FCVT) in seconds, 0 = none. When it
