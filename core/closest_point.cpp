@@ -150,6 +150,7 @@ struct ClosestPointTree::Impl {
     bool empty = true;
     std::vector<NodePair> pairs;
     std::vector<Triangle> triangles;
+    std::vector<int> slotOfFace;  //!< face -> its index in `triangles`
 
     static double boxDistance2(const Node& node, const Vec3& p)
     {
@@ -226,9 +227,11 @@ void ClosestPointTree::Impl::build(const TriMesh& mesh)
     empty = false;
 
     triangles.resize(faceCount);
+    slotOfFace.resize(faceCount);
     for (int i = 0; i < faceCount; ++i) {
         const Face& t = mesh.faces[order[i]];
         triangles[i] = Triangle{mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], order[i]};
+        slotOfFace[order[i]] = i;
     }
 }
 
@@ -289,7 +292,9 @@ ClosestPointTree::~ClosestPointTree() = default;
 //! every box farther than the best triangle so far. Boxes at exactly the best distance are still
 //! visited so that an exact tie goes to the lowest face index, whatever the tree shape.
 //! An empty mesh gives face -1 and an infinite squared distance.
-ClosestPoint ClosestPointTree::closest(const Vec3& p) const
+ClosestPoint ClosestPointTree::closest(const Vec3& p) const { return closest(p, -1); }
+
+ClosestPoint ClosestPointTree::closest(const Vec3& p, int hintFace) const
 {
     ClosestPoint result;
     result.point = p;
@@ -309,6 +314,18 @@ ClosestPoint ClosestPointTree::closest(const Vec3& p) const
     double best2 = kInfinity;
     int bestFace = std::numeric_limits<int>::max();
     Vec3 point = Vec3::Zero(), bary = Vec3::Zero();
+    if (hintFace >= 0 && hintFace < static_cast<int>(impl_->slotOfFace.size())) {
+        // Every face at most as far as the hint is still visited (boxes at exactly the best
+        // distance are), so the answer is the one found without the hint.
+        const Impl::Triangle& t = triangles[impl_->slotOfFace[hintFace]];
+        const double d2 = closestOnTriangle(p, t.a, t.b, t.c, point, bary);
+        if (d2 == d2) {  // not NaN
+            best2 = d2;
+            bestFace = t.face;
+            result.point = point;
+            result.barycentric = bary;
+        }
+    }
     const Impl::Node* node = &impl_->root;
     for (;;) {
         if (node->count > 0) {

@@ -30,6 +30,12 @@ public:
     //! Exact closest point; thread-safe (const, no allocation).
     ClosestPoint closest(const Vec3& p) const;
 
+    //! The same answer, faster when `hintFace` is near the answer (e.g. the previous answer for a
+    //! point that moved a little): its distance bounds the search from the start. Ties still go
+    //! to the lowest face index, so the result does not depend on the hint. A hint out of range
+    //! (e.g. -1) is ignored.
+    ClosestPoint closest(const Vec3& p, int hintFace) const;
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

@@ -92,13 +92,24 @@ const RvdResult& EnergyFunction::diagram(const std::vector<Vec3>& seeds, const R
 
 FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points) const
 {
+    std::vector<int> faces(points.size(), -1);
+    return framesAt(points, faces);
+}
+
+FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vector<int>& faces) const
+{
     FieldFrames frames;
     frames.normals.resize(points.size());
     frames.directions.resize(points.size());
     if (!field_ || !tree_) return frames;
+    faces.resize(points.size(), -1);
+    // Queries in Morton order: consecutive ones walk the same branches of the tree (cache).
+    const std::vector<int> order = mortonIndexOrder(points);
 #pragma omp parallel for schedule(static)
-    for (long long i = 0; i < static_cast<long long>(points.size()); ++i) {
-        const ClosestPoint cp = tree_->closest(points[i]);
+    for (long long k = 0; k < static_cast<long long>(points.size()); ++k) {
+        const int i = order[k];
+        const ClosestPoint cp = tree_->closest(points[i], faces[i]);
+        faces[i] = cp.face;
         const FieldSample s = interpolateField(surface_, *field_, cp.face, cp.barycentric);
         frames.normals[i] = s.normal;
         frames.directions[i] = s.direction;
@@ -123,7 +134,7 @@ EnergyValue EnergyFunction::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& 
     }
     if (field_) {
         // Frames and weights are frozen for this evaluation (appendix).
-        frames_ = framesAt(seeds_);
+        frames_ = framesAt(seeds_, frameFaces_);
         if (lambda_ > 0) {
             fieldGradient_.setZero(x.size());
             value.field = fieldEnergy(seeds_, rvd_.edges, frames_, &fieldGradient_);

@@ -66,6 +66,9 @@ public:
 
     //! The field frames at `points` (their closest points on the surface).
     FieldFrames framesAt(const std::vector<Vec3>& points) const;
+    //! The same; `faces` holds a hint per point (the face of a nearby answer, or -1) and
+    //! receives the face of each closest point.
+    FieldFrames framesAt(const std::vector<Vec3>& points, std::vector<int>& faces) const;
 
     //! The RVD of the last evaluate() / diagram() call.
     const RvdResult& lastDiagram() const { return rvd_; }
@@ -83,6 +86,9 @@ private:
     double lambda_ = 0;
     std::vector<char> frozen_;
     FieldFrames frames_;
+    //! Per sample, the face of its closest point at the previous evaluation: samples move
+    //! little between evaluations, so it bounds the next closest-point search (same answer).
+    std::vector<int> frameFaces_;
     Eigen::VectorXd fieldGradient_;
     int evaluations_ = 0;
 };

@@ -20,6 +20,33 @@ double RvdResult::totalEnergy() const
     return e;
 }
 
+std::vector<int> mortonIndexOrder(const std::vector<Vec3>& points)
+{
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+    for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+    auto spread = [](uint64_t x) {  // 21 bits -> every third bit of 63
+        x &= 0x1fffff;
+        x = (x | x << 32) & 0x1f00000000ffffULL;
+        x = (x | x << 16) & 0x1f0000ff0000ffULL;
+        x = (x | x << 8) & 0x100f00f00f00f00fULL;
+        x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+        x = (x | x << 2) & 0x1249249249249249ULL;
+        return x;
+    };
+    std::vector<std::pair<uint64_t, int>> keys(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Vec3 q = ((points[i] - lo).array() / extent.array() * 2097151.0).matrix();
+        keys[i] = {spread(static_cast<uint64_t>(q.x())) | spread(static_cast<uint64_t>(q.y())) << 1 |
+                       spread(static_cast<uint64_t>(q.z())) << 2,
+                   static_cast<int>(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<int> order(points.size());
+    for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
+    return order;
+}
+
 namespace {
 
 // nanoflann adaptor over the seed array.
@@ -31,6 +58,36 @@ struct SeedCloud {
     bool kdtree_get_bbox(BBox&) const { return false; }
 };
 using SeedTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SeedCloud>, SeedCloud, 3, uint32_t>;
+
+// nanoflann's k-nearest result set with a known upper bound on the k-th distance: subtrees
+// beyond it are skipped from the start. The answer is the same as without the bound as long as
+// the bound is not below the true k-th distance.
+class BoundedKnnResult {
+public:
+    BoundedKnnResult(size_t capacity, uint32_t* indices, double* dists, double bound)
+        : indices_(indices), dists_(dists), capacity_(capacity)
+    {
+        dists_[capacity_ - 1] = bound;
+    }
+    size_t size() const { return count_; }
+    bool full() const { return count_ == capacity_; }
+    double worstDist() const { return dists_[capacity_ - 1]; }
+    bool addPoint(double dist, uint32_t index)
+    {
+        size_t i = count_;
+        for (; i > 0 && dists_[i - 1] > dist; --i)
+            if (i < capacity_) dists_[i] = dists_[i - 1], indices_[i] = indices_[i - 1];
+        if (i < capacity_) dists_[i] = dist, indices_[i] = index;
+        if (count_ < capacity_) ++count_;
+        return true;
+    }
+
+private:
+    uint32_t* indices_;
+    double* dists_;
+    size_t capacity_;
+    size_t count_ = 0;
+};
 
 // A convex polygon inside one input triangle. label[k] names what created the edge from
 // vertex k to vertex k+1: a seed index j >= 0 for the bisector of (i, j), or -1 - e for the
@@ -45,13 +102,19 @@ struct Polygon {
 constexpr int kTrianglesPerChunk = 256;  // fixed, so results do not depend on the thread count
 constexpr int kStoredNeighbours = 12;    // per seed: covers the security radius almost always (measured: 12 ~ 20, faster)
 
+// Integrals over the part of one cell in consecutive triangles of a chunk.
 struct CellPiece {
     int seed;
     double mass;
     Vec3 moment;
     double energy;
-    double boundaryLength;
-    Vec3 boundaryMoment;
+};
+
+// Length and first moment of the input's border inside one cell, in one triangle.
+struct BorderPiece {
+    int seed;
+    double length;
+    Vec3 moment;
 };
 
 // The polygon of one cell in one input triangle, for the connected pieces of the cells
@@ -79,6 +142,7 @@ struct RawTriangle {
 
 struct ChunkOutput {
     std::vector<CellPiece> pieces;
+    std::vector<BorderPiece> borderPieces;
     std::vector<RvdEdge> edges;
     std::vector<Fragment> fragments;
     std::vector<FragmentLink> links;
@@ -87,6 +151,7 @@ struct ChunkOutput {
     void clear()
     {
         pieces.clear();
+        borderPieces.clear();
         edges.clear();
         fragments.clear();
         links.clear();
@@ -103,35 +168,6 @@ struct Scratch {
     std::vector<double> extraDist;
 };
 
-// Indices of `points` sorted along a Morton (Z-order) curve over their bounding box, so that
-// consecutive entries are close in space: walks between them are short and memory accesses
-// stay local.
-std::vector<int> mortonOrder(const std::vector<Vec3>& points)
-{
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
-    for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
-    auto spread = [](uint64_t x) {  // 21 bits -> every third bit of 63
-        x &= 0x1fffff;
-        x = (x | x << 32) & 0x1f00000000ffffULL;
-        x = (x | x << 16) & 0x1f0000ff0000ffULL;
-        x = (x | x << 8) & 0x100f00f00f00f00fULL;
-        x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-        x = (x | x << 2) & 0x1249249249249249ULL;
-        return x;
-    };
-    std::vector<std::pair<uint64_t, int>> keys(points.size());
-    for (size_t i = 0; i < points.size(); ++i) {
-        const Vec3 q = ((points[i] - lo).array() / extent.array() * 2097151.0).matrix();
-        keys[i] = {spread(static_cast<uint64_t>(q.x())) | spread(static_cast<uint64_t>(q.y())) << 1 |
-                       spread(static_cast<uint64_t>(q.z())) << 2,
-                   static_cast<int>(i)};
-    }
-    std::sort(keys.begin(), keys.end());
-    std::vector<int> order(points.size());
-    for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
-    return order;
-}
 
 std::array<int, 3> canonicalTriangle(int a, int b, int c)
 {
@@ -144,12 +180,14 @@ std::array<int, 3> canonicalTriangle(int a, int b, int c)
 }  // namespace
 
 struct RestrictedVoronoiDiagram::Impl {
-    const TriMesh& surface;
-    std::vector<Vec3> unitNormals;  // per input face
-    std::vector<unsigned char> borderEdges;  // per input face: bit e set if edge e has no other face
-    std::vector<int> neighbourFace;          // per input face edge (3f + e): the face across it, -1 if none or several
-    std::vector<int> vertexOrder;            // input vertices in Morton order
-    std::vector<int> faceOrder;              // input faces in Morton order of their centroids
+    // The surface renumbered: vertices in Morton order, faces in Morton order of their
+    // centroids (corners in their input order). The passes over triangles and vertices then read
+    // memory sequentially; random access to the input's arrays was the main cost on big meshes.
+    std::vector<Vec3> position;              // per vertex
+    std::vector<Face> faces;                 // per face, corners index `position`
+    std::vector<Vec3> unitNormals;           // per face
+    std::vector<unsigned char> borderEdges;  // per face: bit e set if edge e has no other face
+    std::vector<int> neighbourFace;          // per face edge (3f + e): the face across it, -1 if none or several
     std::vector<ChunkOutput> chunks;
     std::vector<Scratch> scratch;
 
@@ -160,6 +198,7 @@ struct RestrictedVoronoiDiagram::Impl {
     std::vector<uint32_t> neighbourIndex;  // n * kStoredNeighbours, nearest first, self excluded
     std::vector<double> neighbourDist2;
     std::vector<char> duplicate;  // seed coincides with a lower-index seed: empty cell, no bisector
+    std::vector<char> listDistinct;  // the stored neighbours of the seed are distinct seeds (no fill-up)
     std::vector<int> vertexSeed;  // per input vertex: the seed whose cell contains it, -1 on a tie
     std::vector<int> edgeStart;        // work space of the edge merge
     std::vector<RvdEdge> edgeBuffer;
@@ -167,28 +206,37 @@ struct RestrictedVoronoiDiagram::Impl {
 
     void buildPieces(RvdResult& result) const;
 
-    explicit Impl(const TriMesh& s) : surface(s)
+    explicit Impl(const TriMesh& s)
     {
-        unitNormals.resize(s.faces.size());
-        for (int f = 0; f < s.faceCount(); ++f) {
-            const Vec3 n = faceNormal(s, f);
-            const double len = n.norm();
-            unitNormals[f] = len > 0 ? Vec3(n / len) : Vec3::Zero();
+        const std::vector<int> vertexOrder = mortonIndexOrder(s.vertices);
+        std::vector<int> vertexRank(s.vertices.size());
+        position.resize(s.vertices.size());
+        for (size_t k = 0; k < vertexOrder.size(); ++k) {
+            vertexRank[vertexOrder[k]] = static_cast<int>(k);
+            position[k] = s.vertices[vertexOrder[k]];
         }
-        chunks.resize((s.faces.size() + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
-        vertexOrder = mortonOrder(s.vertices);
         std::vector<Vec3> centroids(s.faces.size());
         for (int f = 0; f < s.faceCount(); ++f)
             centroids[f] = (s.vertices[s.faces[f][0]] + s.vertices[s.faces[f][1]] + s.vertices[s.faces[f][2]]) / 3.0;
-        faceOrder = mortonOrder(centroids);
+        const std::vector<int> faceOrder = mortonIndexOrder(centroids);
+        faces.resize(s.faces.size());
+        unitNormals.resize(s.faces.size());
+        for (size_t k = 0; k < faceOrder.size(); ++k) {
+            const Face& f = s.faces[faceOrder[k]];
+            faces[k] = {vertexRank[f[0]], vertexRank[f[1]], vertexRank[f[2]]};
+            const Vec3 n = faceNormal(s, faceOrder[k]);
+            const double len = n.norm();
+            unitNormals[k] = len > 0 ? Vec3(n / len) : Vec3::Zero();
+        }
+        chunks.resize((faces.size() + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
 
         std::vector<std::pair<std::pair<int, int>, int>> edges;  // (sorted corners) -> face * 3 + e
-        edges.reserve(s.faces.size() * 3);
-        for (int f = 0; f < s.faceCount(); ++f)
-            for (int e = 0; e < 3; ++e) edges.push_back({std::minmax(s.faces[f][e], s.faces[f][(e + 1) % 3]), 3 * f + e});
+        edges.reserve(faces.size() * 3);
+        for (int f = 0; f < static_cast<int>(faces.size()); ++f)
+            for (int e = 0; e < 3; ++e) edges.push_back({std::minmax(faces[f][e], faces[f][(e + 1) % 3]), 3 * f + e});
         std::sort(edges.begin(), edges.end());
-        borderEdges.assign(s.faces.size(), 0);
-        neighbourFace.assign(3 * s.faces.size(), -1);
+        borderEdges.assign(faces.size(), 0);
+        neighbourFace.assign(3 * faces.size(), -1);
         for (size_t r = 0; r < edges.size();) {
             size_t q = r;
             while (q < edges.size() && edges[q].first == edges[r].first) ++q;
@@ -206,9 +254,15 @@ struct RestrictedVoronoiDiagram::Impl {
         const int n = static_cast<int>(seeds->size());
         cloud.points = seeds;
         tree = std::make_unique<SeedTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-        storedNeighbours = std::min(kStoredNeighbours, n - 1);
+        const int stored0 = std::min(kStoredNeighbours, n - 1);
+        // The previous evaluation's lists (seeds move little between evaluations) bound the
+        // k-th neighbour distance: the seed and its previous neighbours are k seeds.
+        const bool previous = stored0 == storedNeighbours && listDistinct.size() == static_cast<size_t>(n) &&
+                              neighbourIndex.size() == static_cast<size_t>(n) * stored0;
+        storedNeighbours = stored0;
         neighbourIndex.resize(static_cast<size_t>(n) * storedNeighbours);
         neighbourDist2.resize(neighbourIndex.size());
+        if (!previous) listDistinct.assign(n, 0);
         duplicate.assign(n, 0);
         const int k = storedNeighbours + 1;
 #pragma omp parallel
@@ -217,7 +271,21 @@ struct RestrictedVoronoiDiagram::Impl {
             std::vector<double> d2(k);
 #pragma omp for schedule(static)
             for (int i = 0; i < n; ++i) {
-                const size_t found = tree->knnSearch((*seeds)[i].data(), k, idx.data(), d2.data());
+                const Vec3& xi = (*seeds)[i];
+                double bound = std::numeric_limits<double>::max();
+                if (listDistinct[i]) {
+                    double r2 = 0;
+                    const uint32_t* old = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
+                    for (int q = 0; q < storedNeighbours; ++q) r2 = std::max(r2, ((*seeds)[old[q]] - xi).squaredNorm());
+                    bound = r2 * (1 + 1e-9) + std::numeric_limits<double>::min();  // rounding margin
+                }
+                BoundedKnnResult knn(k, idx.data(), d2.data(), bound);
+                tree->findNeighbors(knn, xi.data(), nanoflann::SearchParams());
+                size_t found = knn.size();
+                if (found < static_cast<size_t>(std::min(k, n))) {  // cannot happen with a true bound; be safe
+                    found = tree->knnSearch(xi.data(), k, idx.data(), d2.data());
+                }
+                listDistinct[i] = found == static_cast<size_t>(k);
                 int stored = 0;
                 for (size_t q = 0; q < found && stored < storedNeighbours; ++q) {
                     if (static_cast<int>(idx[q]) == i) continue;
@@ -227,6 +295,7 @@ struct RestrictedVoronoiDiagram::Impl {
                     ++stored;
                 }
                 // The seed itself was not among the k nearest (many coincident seeds): fill up.
+                if (stored < storedNeighbours) listDistinct[i] = 0;
                 for (; stored < storedNeighbours; ++stored) {
                     neighbourIndex[static_cast<size_t>(i) * storedNeighbours + stored] = idx[found - 1];
                     neighbourDist2[static_cast<size_t>(i) * storedNeighbours + stored] = d2[found - 1];
@@ -280,7 +349,7 @@ struct RestrictedVoronoiDiagram::Impl {
 
     void computeVertexSeeds()
     {
-        const int n = surface.vertexCount();
+        const int n = static_cast<int>(position.size());
         vertexSeed.resize(n);
         constexpr int kVerticesPerChunk = 1024;
         const int chunkCount = (n + kVerticesPerChunk - 1) / kVerticesPerChunk;
@@ -290,9 +359,8 @@ struct RestrictedVoronoiDiagram::Impl {
             int previous = -1;
             const int end = std::min(n, (c + 1) * kVerticesPerChunk);
             for (int k = c * kVerticesPerChunk; k < end; ++k) {
-                const int v = vertexOrder[k];
-                const int s = certifiedNearestSeed(previous, surface.vertices[v]);
-                vertexSeed[v] = s;
+                const int s = certifiedNearestSeed(previous, position[k]);
+                vertexSeed[k] = s;
                 if (s >= 0) previous = s;
             }
         }
@@ -397,10 +465,10 @@ struct RestrictedVoronoiDiagram::Impl {
     // across shared bisector edges (cells meeting a convex polygon form a connected set).
     void processTriangle(int t, const RvdOptions& options, ChunkOutput& out, Scratch& scratch) const
     {
-        const Face& f = surface.faces[t];
+        const Face& f = faces[t];
         const Vec3& nrm = unitNormals[t];
         if (nrm.isZero()) return;  // zero-area face: nothing to integrate
-        const Vec3 a = surface.vertices[f[0]], b = surface.vertices[f[1]], c = surface.vertices[f[2]];
+        const Vec3 a = position[f[0]], b = position[f[1]], c = position[f[2]];
         // Convex cell, convex triangle: when one seed's cell holds all three corners it holds
         // the whole triangle, and no clipping is needed. This is most triangles.
         const int s0 = vertexSeed[f[0]], s1 = vertexSeed[f[1]], s2 = vertexSeed[f[2]];
@@ -529,9 +597,19 @@ struct RestrictedVoronoiDiagram::Impl {
             moment += area / 3.0 * (q0 + q1 + q2);
             energy += area / 6.0 * (q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm() + q0.dot(q1) + q1.dot(q2) + q2.dot(q0));
         }
-        double borderLength = 0;
-        Vec3 borderMoment = Vec3::Zero();
+        moment += mass * xi;
+        // Consecutive triangles (Morton order) are mostly in the same cell: one piece for them.
+        if (!out.pieces.empty() && out.pieces.back().seed == i) {
+            CellPiece& last = out.pieces.back();
+            last.mass += mass;
+            last.moment += moment;
+            last.energy += energy;
+        } else {
+            out.pieces.push_back({i, mass, moment, energy});
+        }
         if (borderEdges[face]) {
+            double borderLength = 0;
+            Vec3 borderMoment = Vec3::Zero();
             for (int k = 0; k < poly.size; ++k) {
                 const int label = poly.label[k];
                 if (label >= 0 || !(borderEdges[face] & (1u << (-1 - label)))) continue;
@@ -541,8 +619,8 @@ struct RestrictedVoronoiDiagram::Impl {
                 borderLength += len;
                 borderMoment += 0.5 * len * (p0 + p1);
             }
+            if (borderLength > 0) out.borderPieces.push_back({i, borderLength, borderMoment});
         }
-        out.pieces.push_back({i, mass, moment + mass * xi, energy, borderLength, borderMoment});
     }
 };
 
@@ -557,7 +635,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
     m.buildNeighbourLists();
     m.computeVertexSeeds();
 
-    const int faceCount = m.surface.faceCount();
+    const int faceCount = static_cast<int>(m.faces.size());
     const int chunkCount = static_cast<int>(m.chunks.size());
     m.scratch.resize(std::max(1, omp_get_max_threads()));
 #pragma omp parallel
@@ -568,7 +646,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
             ChunkOutput& out = m.chunks[c];
             out.clear();
             const int end = std::min(faceCount, (c + 1) * kTrianglesPerChunk);
-            for (int k = c * kTrianglesPerChunk; k < end; ++k) m.processTriangle(m.faceOrder[k], options, out, scratch);
+            for (int k = c * kTrianglesPerChunk; k < end; ++k) m.processTriangle(k, options, out, scratch);
         }
     }
 
@@ -587,11 +665,12 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
             result.mass[p.seed] += p.mass;
             result.moment[p.seed] += p.moment;
             result.energy[p.seed] += p.energy;
-            if (options.boundary) {
-                result.boundaryLength[p.seed] += p.boundaryLength;
-                result.boundaryMoment[p.seed] += p.boundaryMoment;
-            }
         }
+        if (options.boundary)
+            for (const BorderPiece& p : out.borderPieces) {
+                result.boundaryLength[p.seed] += p.length;
+                result.boundaryMoment[p.seed] += p.moment;
+            }
         result.clippedPolygons += out.clipped;
         if (options.edges) result.edges.insert(result.edges.end(), out.edges.begin(), out.edges.end());
     }
@@ -642,7 +721,7 @@ void RestrictedVoronoiDiagram::Impl::buildPieces(RvdResult& result) const
     fragments.reserve(fragmentCount);
     for (const ChunkOutput& out : chunks) fragments.insert(fragments.end(), out.fragments.begin(), out.fragments.end());
     // The fragments of one input triangle are consecutive.
-    std::vector<int> faceFirst(surface.faces.size(), -1), faceEnd(surface.faces.size(), -1);
+    std::vector<int> faceFirst(faces.size(), -1), faceEnd(faces.size(), -1);
     for (int g = 0; g < fragmentCount; ++g) {
         const int f = fragments[g].face;
         if (faceFirst[f] < 0) faceFirst[f] = g;
