@@ -1,6 +1,6 @@
 #pragma once
 // The input's open boundary as a set of segments, and the closest point on it. Samples of the
-// cells that meet the border are kept on it (optimize.h: relaxBoundarySamples).
+// cells that meet the border are kept on it (feature_lines.h: relaxConstrainedSamples).
 #include "mesh.h"
 
 #include <utility>

@@ -48,27 +48,6 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
     }
 }
 
-std::vector<char> relaxBoundarySamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
-                                       const std::vector<Segment>& border, int iterations)
-{
-    std::vector<char> onBorder(seeds.size(), 0);
-    if (border.empty()) return onBorder;
-    RvdOptions options;
-    options.boundary = true;
-    for (int it = 0; it < iterations; ++it) {
-        const RvdResult& rvd = energy.diagram(seeds, options);
-#pragma omp parallel for schedule(static)
-        for (long long i = 0; i < static_cast<long long>(seeds.size()); ++i) {
-            onBorder[i] = rvd.boundaryLength[i] > 0;
-            if (onBorder[i])
-                seeds[i] = closestPointOnSegments(rvd.boundaryMoment[i] / rvd.boundaryLength[i], border);
-            else if (rvd.mass[i] > 0)
-                seeds[i] = rvd.moment[i] / rvd.mass[i];
-        }
-    }
-    return onBorder;
-}
-
 namespace {
 
 // Wraps the energy for LBFGS++ and remembers the best point evaluated.

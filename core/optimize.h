@@ -27,15 +27,6 @@ struct OptimizeStats {
 void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations,
                      std::uint64_t seed);
 
-//! Lloyd steps that put the samples of the cells meeting the input's border on that border:
-//! such a sample moves to the centroid of the border inside its cell (a 1D CVT of the boundary
-//! curves), projected on the border; the others move to their cell's centroid. The RDT then
-//! has its boundary edges on the input's boundary instead of half a cell inside it.
-//! `border` holds the input's boundary edges as segments (at the working scale). Returns, per
-//! sample, whether it is on the border after the last step.
-std::vector<char> relaxBoundarySamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
-                                       const std::vector<Segment>& border, int iterations);
-
 //! L-BFGS on the energy, starting from and updating `seeds`. The best point seen is kept: a
 //! line-search failure restarts from it; a second failure without progress ends early.
 OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, const LbfgsParams& params);
