@@ -85,7 +85,8 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
     // stops at a numerically exact minimum.
     solverParams.epsilon = 1e-12 * std::sqrt(static_cast<double>(x.size()));
     solverParams.epsilon_rel = 0;
-    solverParams.past = 0;
+    solverParams.past = params.relativeDecrease > 0 ? std::max(1, params.window) : 0;
+    solverParams.delta = params.relativeDecrease;
     solverParams.max_linesearch = 40;
 
     int failuresWithoutProgress = 0;
