@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <cmath>
+
 #include <numeric>
 
 using namespace fieldcvt;
@@ -129,4 +131,27 @@ TEST(Rvd, ResultDoesNotDependOnThreadCount)
     EXPECT_EQ(one.triangles, two.triangles);
     ASSERT_EQ(one.edges.size(), two.edges.size());
     for (size_t e = 0; e < one.edges.size(); ++e) EXPECT_EQ(one.edges[e].length, two.edges[e].length);
+}
+
+TEST(Rvd, WarmStartedNeighbourSearchGivesTheSameDiagram)
+{
+    // compute() bounds its nearest-seed search by the previous call's neighbour lists; after a
+    // call on other seeds the diagram must equal the one of a fresh object, bit for bit.
+    const TriMesh surface = testmesh::torus(60, 30);
+    const std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 400, 8);
+    std::vector<Vec3> moved = seeds;
+    for (size_t i = 0; i < moved.size(); ++i) moved[i] += 0.02 * Vec3(std::sin(1.0 * i), std::cos(3.0 * i), std::sin(7.0 * i));
+    RvdOptions options;
+    options.edges = options.triangles = true;
+    RestrictedVoronoiDiagram warm(surface), fresh(surface);
+    RvdResult a, b;
+    warm.compute(moved, options, a);
+    warm.compute(seeds, options, a);
+    fresh.compute(seeds, options, b);
+    EXPECT_EQ(a.mass, b.mass);
+    EXPECT_EQ(a.energy, b.energy);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.pieceTriangles, b.pieceTriangles);
+    ASSERT_EQ(a.edges.size(), b.edges.size());
+    for (size_t e = 0; e < a.edges.size(); ++e) EXPECT_EQ(a.edges[e].length, b.edges[e].length);
 }
