@@ -171,6 +171,7 @@ std::optional<Row> meshlabRow(const std::string& server, const TriMesh& input, i
         const DistanceMetrics d = computeDistance(row.result.mesh, reference, samples);
         row.result.metrics.dRms = d.rms;
         row.result.metrics.dH = d.hausdorff;
+        row.result.metrics.dBoundary = boundaryDistance(row.result.mesh, reference);
         row.seconds = row.isotropic.seconds;
         row.result.warnings = row.isotropic.notes;
     } catch (const Error& e) {

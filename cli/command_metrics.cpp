@@ -54,9 +54,11 @@ int runMetrics(const std::vector<std::string>& args)
     const TriMesh mesh = readMesh(path);
     QualityMetrics quality = computeQuality(mesh);
     if (auto ref = a.text("ref")) {
-        const DistanceMetrics d = computeDistance(mesh, readMesh(*ref));
+        const TriMesh reference = readMesh(*ref);
+        const DistanceMetrics d = computeDistance(mesh, reference);
         quality.dRms = d.rms;
         quality.dH = d.hausdorff;
+        quality.dBoundary = boundaryDistance(mesh, reference);
     }
     const nlohmann::ordered_json metrics = metricsJson(quality);
     if (a.flag("json")) std::printf("%s\n", metrics.dump(2).c_str());

@@ -26,6 +26,8 @@ nlohmann::ordered_json metricsJson(const QualityMetrics& m)
     j["v6_pct"] = numberOrNull(m.v6Pct);
     j["d_rms"] = numberOrNull(m.dRms);
     j["d_h"] = numberOrNull(m.dH);
+    j["d_boundary"] = numberOrNull(m.dBoundary);
+    j["boundary_v4_pct"] = numberOrNull(m.boundaryV4Pct);
     return j;
 }
 

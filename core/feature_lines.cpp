@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 // A feature line that turns by more than this at a vertex has a corner there.
-constexpr double kCornerTurnDegrees = 45.0;
+constexpr double kCornerTurnDegrees = 25.0;
 
 struct PointCloud {
     const std::vector<Vec3>* points = nullptr;
@@ -54,6 +54,27 @@ Vec3 closestOnSegment(const Vec3& p, const Segment& s, double* squaredDistance)
     return q;
 }
 
+// Vertices where a polyline made of `edges` turns by more than kCornerTurnDegrees (or where
+// more than two of its edges meet).
+std::vector<char> sharpTurns(const TriMesh& surface, const std::vector<std::array<int, 2>>& edges)
+{
+    std::vector<Vec3> firstDirection(surface.vertices.size(), Vec3::Zero());
+    std::vector<int> count(surface.vertices.size(), 0);
+    std::vector<char> sharp(surface.vertices.size(), 0);
+    const double cosTurn = std::cos(kCornerTurnDegrees * kPi / 180.0);
+    for (const auto& [a, b] : edges) {
+        for (const auto& [from, to] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
+            const Vec3 out = (surface.vertices[size_t(to)] - surface.vertices[size_t(from)]).normalized();
+            Vec3& first = firstDirection[size_t(from)];
+            if (++count[size_t(from)] == 1)
+                first = out;
+            else if (count[size_t(from)] > 2 || -first.dot(out) < cosTurn)  // straight on: first = -out
+                sharp[size_t(from)] = 1;
+        }
+    }
+    return sharp;
+}
+
 }  // namespace
 
 FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const std::vector<std::array<int, 2>>& userEdges,
@@ -61,9 +82,9 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
 {
     FeatureLines lines;
     if (ignoredUserEdges) *ignoredUserEdges = 0;
-    if (!(angleDegrees > 0) && userEdges.empty()) return lines;
     const std::vector<EdgeFace> list = edgeFaces(surface);
     std::vector<char> onBorder(surface.vertices.size(), 0);
+    std::vector<std::array<int, 2>> borderEdges;
     std::vector<std::array<int, 2>> all;  // distinct edges of the surface
     const double cosLimit = std::cos(std::min(angleDegrees, 180.0) * kPi / 180.0);
     for (size_t r = 0; r < list.size();) {
@@ -72,6 +93,7 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
         all.push_back({list[r].a, list[r].b});
         if (e - r == 1) {
             onBorder[size_t(list[r].a)] = onBorder[size_t(list[r].b)] = 1;
+            borderEdges.push_back({list[r].a, list[r].b});
         } else if (e - r == 2 && angleDegrees > 0) {
             // The dihedral angle here is the angle between the two face normals: 0 on a flat
             // stretch, 90° on a cube's edge.
@@ -99,23 +121,13 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
     // A line ends (1), branches (>= 3), runs into the open border or turns sharply: those
     // points must be output vertices, so a sample sits on each. (A sample free to slide past a
     // sharp turn would cut it: fandisk's two creases that meet at 25° lost 0.45 % of the
-    // diagonal there.)
-    std::vector<Vec3> firstDirection(surface.vertices.size(), Vec3::Zero());
-    std::vector<char> sharpTurn(surface.vertices.size(), 0);
-    const double cosTurn = std::cos(kCornerTurnDegrees * kPi / 180.0);
-    for (const auto& [a, b] : lines.edges) {
-        for (const auto& [from, to] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
-            const Vec3 out = (surface.vertices[size_t(to)] - surface.vertices[size_t(from)]).normalized();
-            Vec3& first = firstDirection[size_t(from)];
-            if (first.isZero())
-                first = out;
-            else if (-first.dot(out) < cosTurn)  // straight on would be first = -out
-                sharpTurn[size_t(from)] = 1;
-        }
-    }
+    // diagonal there.) The open border's own sharp turns are corners too (camelhead's coarse
+    // neck cut turns by up to 90°).
+    const std::vector<char> lineTurns = sharpTurns(surface, lines.edges);
+    const std::vector<char> borderTurns = sharpTurns(surface, borderEdges);
     for (int v = 0; v < surface.vertexCount(); ++v) {
         const int d = degree[size_t(v)];
-        if (d == 1 || d >= 3 || (d > 0 && onBorder[size_t(v)]) || (d == 2 && sharpTurn[size_t(v)]))
+        if (d == 1 || d >= 3 || (d > 0 && onBorder[size_t(v)]) || lineTurns[size_t(v)] || borderTurns[size_t(v)])
             lines.corners.push_back(v);
     }
     return lines;
@@ -313,7 +325,7 @@ std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, st
 
 double featureDeviation(const FeatureLines& features, const TriMesh& mesh, double angleDegrees, double spacing)
 {
-    if (features.empty()) return 0;
+    if (features.segments.empty()) return 0;
     // The output edges that count: sharp ones (or all).
     std::vector<Segment> edges;
     const std::vector<EdgeFace> list = edgeFaces(mesh);

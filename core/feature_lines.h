@@ -17,14 +17,15 @@ struct FeatureLines {
     std::vector<std::array<int, 2>> edges;  //!< feature edges (surface vertex pairs, smaller first), sorted
     std::vector<Segment> segments;          //!< the same edges as segments
     //! Surface vertices where the lines end (1 feature edge), branch (≥ 3), meet the open
-    //! border or turn by more than 45°, sorted.
+    //! border or turn by more than 45°, and where the open border turns by more than 45°, sorted.
     std::vector<int> corners;
-    bool empty() const { return edges.empty(); }
+    bool empty() const { return segments.empty() && corners.empty(); }
 };
 
 //! Feature lines of `surface`: interior edges whose dihedral angle (between the two face
 //! normals) is at least `angleDegrees` (0 = none), plus `userEdges` (vertex pairs of `surface`
-//! that must be edges of it; others are ignored and counted in `ignoredUserEdges`).
+//! that must be edges of it; others are ignored and counted in `ignoredUserEdges`), and the
+//! corners of the lines and of the open border.
 FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees,
                             const std::vector<std::array<int, 2>>& userEdges = {}, int* ignoredUserEdges = nullptr);
 

@@ -1,5 +1,8 @@
 #include "metrics.h"
 
+#include "boundary.h"
+#include "feature_lines.h"
+
 #include "closest_point.h"
 #include "errors.h"
 
@@ -407,14 +410,38 @@ QualityMetrics computeQuality(const TriMesh& mesh)
         ++valence[b];
         if (edges.faceCount(e) == 1) onBoundary[a] = onBoundary[b] = 1;
     }
-    int interior = 0, regular = 0;
+    int interior = 0, regular = 0, border = 0, borderRegular = 0;
     for (int v = 0; v < mesh.vertexCount(); ++v) {
-        if (valence[v] == 0 || onBoundary[v]) continue;
+        if (valence[v] == 0) continue;
+        if (onBoundary[v]) {
+            // Three equilateral triangles fill the half-plane at a straight boundary.
+            ++border;
+            borderRegular += valence[v] == 4;
+            continue;
+        }
         ++interior;
         regular += valence[v] == 6;
     }
     q.v6Pct = interior > 0 ? 100.0 * regular / interior : 0.0;
+    if (border > 0) q.boundaryV4Pct = 100.0 * borderRegular / border;
     return q;
+}
+
+double boundaryDistance(const TriMesh& mesh, const TriMesh& reference)
+{
+    const double diagonal = boundingBoxDiagonal(reference);
+    auto borderLines = [](const TriMesh& m) {
+        FeatureLines lines;
+        lines.segments = boundarySegments(m);
+        return lines;
+    };
+    const FeatureLines ours = borderLines(mesh), theirs = borderLines(reference);
+    if (ours.empty() || theirs.empty() || !(diagonal > 0)) return std::numeric_limits<double>::quiet_NaN();
+    // featureDeviation with 180°: only the other mesh's boundary (and non-manifold) edges count.
+    const double spacing = 1e-4 * diagonal;
+    const double there = featureDeviation(theirs, mesh, 180, spacing);
+    const double back = featureDeviation(ours, reference, 180, spacing);
+    return std::max(there, back) / diagonal;
 }
 
 // ---------------------------------------------------------------------------------------------

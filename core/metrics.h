@@ -37,6 +37,11 @@ struct QualityMetrics {
     //! NaN when no reference was given.
     double dRms = std::numeric_limits<double>::quiet_NaN();
     double dH = std::numeric_limits<double>::quiet_NaN();
+    //! Hausdorff distance between the open boundaries of the mesh and of the reference, as a
+    //! fraction of the reference's diagonal; NaN without a reference or without boundaries.
+    double dBoundary = std::numeric_limits<double>::quiet_NaN();
+    //! % of boundary vertices of valence 4 (the boundary's regular valence); NaN if closed.
+    double boundaryV4Pct = std::numeric_limits<double>::quiet_NaN();
 };
 
 //! Q_min ... V6% of `mesh` (distances left NaN).
@@ -50,5 +55,10 @@ struct DistanceMetrics {
 //! Symmetric distances between `mesh` and `reference` from exact point-to-triangle distances on
 //! dense area-uniform samples of both surfaces (plus their vertices). Deterministic.
 DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, int samplesPerMesh = 200000);
+
+//! Symmetric Hausdorff distance between the open-boundary curves of `mesh` and `reference`
+//! (each sampled every 1e-4 of the reference's diagonal, exact distance to the other's
+//! boundary edges), as a fraction of that diagonal. NaN when either has no boundary.
+double boundaryDistance(const TriMesh& mesh, const TriMesh& reference);
 
 }  // namespace fieldcvt

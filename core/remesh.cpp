@@ -158,14 +158,12 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     // the CVT iterations would cost a closest-point query per sample and evaluation).
     const bool useField = params.fcvtIterations > 0 && params.lambda > 0;
     const std::vector<Segment> border = boundarySegments(surface);
-    FeatureLines features;
-    if (params.featureAngleDegrees > 0 || !params.featureEdges.empty()) {
-        int ignored = 0;
-        features = detectFeatures(surface, params.featureAngleDegrees, featureEdgesOnSurface(params.featureEdges, cleanIndex),
-                                  &ignored);
-        if (ignored > 0)
-            result.warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
-    }
+    // Feature lines (if asked for) and the corners of the lines and of the open border.
+    int ignored = 0;
+    const FeatureLines features = detectFeatures(surface, params.featureAngleDegrees,
+                                                 featureEdgesOnSurface(params.featureEdges, cleanIndex), &ignored);
+    if (ignored > 0)
+        result.warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
     const bool constrained = !border.empty() || !features.empty();
     const double expectedEvaluations = params.lloydIterations + 1.1 * (params.cvtIterations + params.fcvtIterations) +
                                        (constrained ? params.boundaryIterations : 0) + 2;
@@ -301,6 +299,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             const DistanceMetrics d = computeDistance(result.mesh, reference, samples);
             result.metrics.dRms = d.rms;
             result.metrics.dH = d.hausdorff;
+            if (!border.empty()) result.metrics.dBoundary = boundaryDistance(result.mesh, reference);
         }
         result.outputTopology = computeTopology(result.mesh);
         const TopologySummary& in = result.inputTopology;

@@ -26,6 +26,29 @@ add_test(NAME cli_quality_bunny_5000
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/bunny.obj 5000
           ${FCVT_CLI_WORK}/bunny "q_avg>=0.93" "theta_min>=20" "v6_pct>=84" "d_h<=0.006" boundary_loops=5
           vertex_tolerance=0.01)
+
+# Issue 5: the default pipeline (FCVT + valence optimisation) on closed meshes, and open
+# boundaries kept (loops, distance to the input's boundary, valence 4 along it).
+set(FCVT_VALENCE_BARS defaults "q_avg>=0.95" "theta_min>=32" "pct_lt30<=0" "v6_pct>=94" keep_genus manifold)
+add_test(NAME cli_valence_fertility_3000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 3000
+          ${FCVT_CLI_WORK}/valence_fertility ${FCVT_VALENCE_BARS} "d_h<=0.007")
+add_test(NAME cli_valence_torus_1000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/torus.obj 1000
+          ${FCVT_CLI_WORK}/valence_torus ${FCVT_VALENCE_BARS} "d_h<=0.005")
+set(FCVT_BOUNDARY_BARS defaults "d_boundary<=0.002" "theta_min>=25" "pct_lt30<=0.1" "boundary_v4_pct>=90" manifold)
+add_test(NAME cli_boundary_cylinder_1000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/cylinder.off 1000
+          ${FCVT_CLI_WORK}/boundary_cylinder ${FCVT_BOUNDARY_BARS} boundary_loops=2)
+add_test(NAME cli_boundary_mask_4000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/mask.off 4000
+          ${FCVT_CLI_WORK}/boundary_mask ${FCVT_BOUNDARY_BARS} boundary_loops=1)
+add_test(NAME cli_boundary_camelhead_3000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/camelhead.off 3000
+          ${FCVT_CLI_WORK}/boundary_camelhead ${FCVT_BOUNDARY_BARS} boundary_loops=1)
+set_tests_properties(cli_valence_fertility_3000 cli_valence_torus_1000 cli_boundary_cylinder_1000 cli_boundary_mask_4000
+  cli_boundary_camelhead_3000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
+
 add_test(NAME cli_determinism
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_determinism.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 1000
           ${FCVT_CLI_WORK}/determinism)

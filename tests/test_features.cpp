@@ -36,7 +36,7 @@ TEST(Features, CubeEdgesAndCornersByDihedralAngle)
     EXPECT_EQ(lines.corners.size(), 8u);  // three feature edges meet at every corner
     for (const Segment& s : lines.segments) EXPECT_NEAR((s.second - s.first).norm(), 1.0, 1e-12);
     EXPECT_TRUE(detectFeatures(m, 91).empty());
-    EXPECT_TRUE(detectFeatures(m, 0).empty());
+    EXPECT_TRUE(detectFeatures(m, 0).empty());  // closed: no border corners either
 }
 
 TEST(Features, UserEdgesMustBeMeshEdges)
@@ -66,6 +66,19 @@ TEST(Features, SharpTurnOfALineIsACorner)
     EXPECT_TRUE(std::binary_search(lines.corners.begin(), lines.corners.end(), c));
     EXPECT_FALSE(std::binary_search(lines.corners.begin(), lines.corners.end(), b));
     EXPECT_FALSE(std::binary_search(lines.corners.begin(), lines.corners.end(), d));
+}
+
+TEST(Features, SharpTurnsOfTheOpenBorderAreCorners)
+{
+    // A flat square patch: its four corners (90° turns) and nothing else, even without lines.
+    const TriMesh m = planeGrid(4, 4.0);
+    const FeatureLines lines = detectFeatures(m, 0);
+    EXPECT_TRUE(lines.segments.empty());
+    ASSERT_EQ(lines.corners.size(), 4u);
+    for (int c : lines.corners) {
+        const Vec3& p = m.vertices[size_t(c)];
+        EXPECT_TRUE((p.x() == 0 || p.x() == 4) && (p.y() == 0 || p.y() == 4)) << p.transpose();
+    }
 }
 
 TEST(Features, TwoCloseLinesGiveTwoPiecesOfOneCell)

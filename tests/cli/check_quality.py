@@ -1,10 +1,12 @@
-"""Remeshes a bundled mesh with fcvt as a pure CVT (lambda = 0, 130 CVT iterations, 0 FCVT
-iterations, all explicit: the defaults are FCVT's) and checks the issue's
-quality bars three ways: the run's JSON report, `fcvt metrics --ref` on the written file, and a
-pure-Python measurement of that file.
+"""Remeshes a bundled mesh with fcvt and checks quality bars three ways: the run's JSON report,
+`fcvt metrics --ref` on the written file, and a pure-Python measurement of that file.
+By default the run is a pure CVT (lambda = 0, 130 CVT iterations, 0 FCVT iterations, no valence
+optimisation, all explicit: the defaults are FCVT's; issue 2's bars); with the word `defaults`
+among the bars it is the default pipeline (FCVT + valence optimisation). Arguments starting
+with -- are passed on to `fcvt remesh`.
 Usage: check_quality.py FCVT INPUT VERTICES WORK_DIR [BAR ...]
-Bars: KEY>=X or KEY<=X on the metrics (q_avg, theta_min, pct_lt30, v6_pct, d_h, ...),
-keep_genus, manifold, boundary_loops=N, vertex_tolerance=FRACTION."""
+Bars: KEY>=X or KEY<=X on the metrics (q_avg, theta_min, pct_lt30, v6_pct, d_h, d_boundary,
+boundary_v4_pct, ...), keep_genus, manifold, boundary_loops=N, vertex_tolerance=FRACTION."""
 import json
 import os
 import sys
@@ -12,14 +14,16 @@ import sys
 from fcvt_check import check, finish, measure, metrics_json, read_ply, run_ok
 
 fcvt, source, vertices, work = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
-bars = sys.argv[5:]
+bars = [b for b in sys.argv[5:] if not b.startswith("--") and b != "defaults"]
+extra = [b for b in sys.argv[5:] if b.startswith("--")]
+pure_cvt = "defaults" not in sys.argv[5:]
 os.makedirs(work, exist_ok=True)
 name = os.path.splitext(os.path.basename(source))[0]
 out = os.path.join(work, f"{name}_{vertices}.ply")
 report_path = os.path.join(work, f"{name}_{vertices}.json")
 
-print(run_ok([fcvt, "remesh", source, out, "--vertices", str(vertices), "--lambda", "0",
-              "--cvt-iterations", "130", "--fcvt-iterations", "0", "--report", report_path]))
+cvt = ["--lambda", "0", "--cvt-iterations", "130", "--fcvt-iterations", "0", "--no-valence"] if pure_cvt else []
+print(run_ok([fcvt, "remesh", source, out, "--vertices", str(vertices), "--report", report_path] + cvt + extra))
 with open(report_path) as f:
     report = json.load(f)
 measured = metrics_json(fcvt, out, ref=source)

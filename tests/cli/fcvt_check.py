@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 METRIC_KEYS = ["q_min", "q_avg", "theta_min", "theta_min_avg", "theta_max",
-               "pct_lt30", "pct_gt90", "v6_pct", "d_rms", "d_h"]
+               "pct_lt30", "pct_gt90", "v6_pct", "d_rms", "d_h", "d_boundary", "boundary_v4_pct"]
 
 failures = []
 
