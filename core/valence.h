@@ -30,7 +30,7 @@ struct ValenceParams {
     //! When no single operation lowers R: chains of up to this many operations, R-neutral flips
     //! (each moves a 5–7 pair by one edge) ending in one that lowers R (the pair met another
     //! defect); 0 or 1 = off, 2 = one flip then the operation it enables, at most 6. 5 by
-    //! measurement: V6% 93.3 / 93.2 (depth 2) -> 94.9 / 94.9 on torus 1000 / fertility 3000, in
+    //! measurement: V6% 93.3 / 93.2 (depth 2) -> 95.2 / 95.0 on torus 1000 / fertility 3000, in
     //! a few hundredths of a second; 6 adds little.
     int lookAheadDepth = 5;
     //! Weight of the field-alignment term in the final relaxation, on the scale of
