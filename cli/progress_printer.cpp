@@ -21,7 +21,9 @@ void ProgressPrinter::report(const std::string& stage, double percent)
 {
     std::lock_guard<std::mutex> lock(mutex_);
     percent = percent < 0 ? 0 : percent > 100 ? 100 : percent;
-    const bool newStage = stage != stage_;
+    // "cvt 12/65": the first word names the stage; plain lines only start anew with it.
+    const std::string key = stage.substr(0, stage.find(' '));
+    const bool newStage = key != stage_;
     if (terminal_) {
         const int tenths = static_cast<int>(percent * 10);
         if (!newStage && tenths == shown_) return;
@@ -38,7 +40,7 @@ void ProgressPrinter::report(const std::string& stage, double percent)
         shown_ = tens;
         std::fprintf(stderr, "fcvt: %s %d %%\n", stage.c_str(), static_cast<int>(percent));
     }
-    stage_ = stage;
+    stage_ = key;
     std::fflush(stderr);
 }
 

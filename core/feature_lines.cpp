@@ -54,31 +54,32 @@ Vec3 closestOnSegment(const Vec3& p, const Segment& s, double* squaredDistance)
     return q;
 }
 
-// Vertices where a polyline made of `edges` turns by more than kCornerTurnDegrees (or where
-// more than two of its edges meet).
-std::vector<char> sharpTurns(const TriMesh& surface, const std::vector<std::array<int, 2>>& edges)
+// Per vertex, how far (degrees) a polyline made of `edges` turns there: 0 going straight on,
+// 180 where more than two of its edges meet, 0 off the polyline.
+std::vector<double> turnAngles(const TriMesh& surface, const std::vector<std::array<int, 2>>& edges)
 {
     std::vector<Vec3> firstDirection(surface.vertices.size(), Vec3::Zero());
     std::vector<int> count(surface.vertices.size(), 0);
-    std::vector<char> sharp(surface.vertices.size(), 0);
-    const double cosTurn = std::cos(kCornerTurnDegrees * kPi / 180.0);
+    std::vector<double> turn(surface.vertices.size(), 0.0);
     for (const auto& [a, b] : edges) {
         for (const auto& [from, to] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
             const Vec3 out = (surface.vertices[size_t(to)] - surface.vertices[size_t(from)]).normalized();
             Vec3& first = firstDirection[size_t(from)];
             if (++count[size_t(from)] == 1)
                 first = out;
-            else if (count[size_t(from)] > 2 || -first.dot(out) < cosTurn)  // straight on: first = -out
-                sharp[size_t(from)] = 1;
+            else if (count[size_t(from)] > 2)
+                turn[size_t(from)] = 180;
+            else  // straight on is first = -out
+                turn[size_t(from)] = std::acos(std::clamp(-first.dot(out), -1.0, 1.0)) * 180.0 / kPi;
         }
     }
-    return sharp;
+    return turn;
 }
 
 }  // namespace
 
 FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const std::vector<std::array<int, 2>>& userEdges,
-                            int* ignoredUserEdges)
+                            int* ignoredUserEdges, double cornerSpacing)
 {
     FeatureLines lines;
     if (ignoredUserEdges) *ignoredUserEdges = 0;
@@ -123,13 +124,34 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
     // sharp turn would cut it: fandisk's two creases that meet at 25° lost 0.45 % of the
     // diagonal there.) The open border's own sharp turns are corners too (camelhead's coarse
     // neck cut turns by up to 90°).
-    const std::vector<char> lineTurns = sharpTurns(surface, lines.edges);
-    const std::vector<char> borderTurns = sharpTurns(surface, borderEdges);
+    // Corners closer than `cornerSpacing` to a more important one are dropped: two fixed
+    // samples closer than a cell make a sliver (a jagged hole outline on the bunny gave 3°
+    // angles). Line ends and branches come first, then the sharper turns.
+    const std::vector<double> lineTurns = turnAngles(surface, lines.edges);
+    const std::vector<double> borderTurns = turnAngles(surface, borderEdges);
+    std::vector<std::pair<double, int>> candidates;  // (importance, vertex)
     for (int v = 0; v < surface.vertexCount(); ++v) {
         const int d = degree[size_t(v)];
-        if (d == 1 || d >= 3 || (d > 0 && onBorder[size_t(v)]) || lineTurns[size_t(v)] || borderTurns[size_t(v)])
-            lines.corners.push_back(v);
+        const double turn = std::max(lineTurns[size_t(v)], borderTurns[size_t(v)]);
+        if (d == 1 || d >= 3 || (d > 0 && onBorder[size_t(v)]))
+            candidates.push_back({1000.0, v});
+        else if (turn > kCornerTurnDegrees)
+            candidates.push_back({turn, v});
     }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& x, const auto& y) { return x.first > y.first; });
+    const double spacing2 = cornerSpacing * cornerSpacing;
+    for (const auto& [importance, v] : candidates) {
+        (void)importance;
+        bool isolated = true;
+        for (int kept : lines.corners)
+            if ((surface.vertices[size_t(kept)] - surface.vertices[size_t(v)]).squaredNorm() < spacing2) {
+                isolated = false;
+                break;
+            }
+        if (isolated) lines.corners.push_back(v);
+    }
+    std::sort(lines.corners.begin(), lines.corners.end());
     return lines;
 }
 

@@ -25,9 +25,11 @@ struct FeatureLines {
 //! Feature lines of `surface`: interior edges whose dihedral angle (between the two face
 //! normals) is at least `angleDegrees` (0 = none), plus `userEdges` (vertex pairs of `surface`
 //! that must be edges of it; others are ignored and counted in `ignoredUserEdges`), and the
-//! corners of the lines and of the open border.
+//! corners of the lines and of the open border. A corner closer than `cornerSpacing` to a more
+//! important one (line ends and branches first, then sharper turns) is left out.
 FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees,
-                            const std::vector<std::array<int, 2>>& userEdges = {}, int* ignoredUserEdges = nullptr);
+                            const std::vector<std::array<int, 2>>& userEdges = {}, int* ignoredUserEdges = nullptr,
+                            double cornerSpacing = 0);
 
 //! Where each sample ended up after relaxConstrainedSamples (what it may do afterwards).
 enum class SampleConstraint : char { Free, Border, Feature, Corner };

@@ -160,8 +160,11 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     const std::vector<Segment> border = boundarySegments(surface);
     // Feature lines (if asked for) and the corners of the lines and of the open border.
     int ignored = 0;
+    // Corners at least 2 apart at the working scale (about two edge lengths): closer fixed
+    // samples make slivers and pull border samples off the holes of jagged outlines (bunny 5000:
+    // spacing 0.6 gave θ_min 24° and a border 0.9 % away, 2 gives 29.6° and 0.43 %).
     const FeatureLines features = detectFeatures(surface, params.featureAngleDegrees,
-                                                 featureEdgesOnSurface(params.featureEdges, cleanIndex), &ignored);
+                                                 featureEdgesOnSurface(params.featureEdges, cleanIndex), &ignored, 2.0);
     if (ignored > 0)
         result.warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
     const bool constrained = !border.empty() || !features.empty();
@@ -172,15 +175,24 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     DirectionField field;
     std::string stage = "sampling";
     double best = std::numeric_limits<double>::infinity();
+    std::string stepStage;  // the stage whose steps `steps` counts (shown as "cvt 12/65")
+    int steps = 0;
     energy.onEvaluation = [&](const EnergyValue& value) {
         // One history entry per accepted step: L-BFGS's line search only moves on after an
         // evaluation that lowers E_tot, and every Lloyd step counts.
-        if (stage == "lloyd" || value.total < best) {
+        const bool accepted = stage == "lloyd" || value.total < best;
+        if (accepted) {
             best = std::min(best, value.total);
             result.energyHistory.push_back({stage, value.cvt, value.field});
         }
         const double fraction = std::min(1.0, energy.evaluations() / expectedEvaluations);
-        pipeline.report(stage, 5 + 85 * fraction);
+        const int budget = stage == "lloyd" ? params.lloydIterations
+                         : stage == "cvt"   ? params.cvtIterations
+                         : stage == "fcvt"  ? params.fcvtIterations : 0;
+        if (stage != stepStage) stepStage = stage, steps = 0;
+        steps += accepted;
+        pipeline.report(budget > 0 ? stage + " " + std::to_string(std::min(steps, budget)) + "/" + std::to_string(budget) : stage,
+                        5 + 85 * fraction);
         if (params.timeLimitSeconds > 0 && secondsSince(start) > params.timeLimitSeconds) throw TimeLimitReached();
     };
 

@@ -160,8 +160,12 @@ QString stageLabel(const std::string& stage)
         {"metrics", "measuring quality"},
         {"done", "done"},
     };
-    const auto it = labels.find(stage);
-    return QString("FCVT: ") + (it != labels.end() ? QString(it->second) : QString::fromStdString(stage));
+    // "cvt 12/65": the first word names the stage, the rest is the step.
+    const size_t space = stage.find(' ');
+    const std::string key = stage.substr(0, space);
+    const QString step = space == std::string::npos ? QString() : QString::fromStdString(stage.substr(space));
+    const auto it = labels.find(key);
+    return QString("FCVT: ") + (it != labels.end() ? QString(it->second) : QString::fromStdString(key)) + step;
 }
 
 // The Table 2 figures of computeQuality as one log line (distances apart).

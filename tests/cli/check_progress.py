@@ -14,13 +14,16 @@ os.makedirs(work, exist_ok=True)
 args = [fcvt, "remesh", os.path.join(resources, "torus.obj"), os.path.join(work, "out.ply"),
         "--vertices", "200", "--cvt-iterations", "5", "--fcvt-iterations", "5"]
 
-# Pipe: plain lines, each "fcvt: STAGE N %", the stages in pipeline order, ending at done 100 %.
+# Pipe: plain lines, each "fcvt: STAGE [STEP/BUDGET] N %", the stages in pipeline order, ending
+# at done 100 %.
 code, _, stderr = run(args, timeout=300)
 check(code == 0, f"piped run failed: {stderr}")
 lines = [l for l in stderr.splitlines() if not l.startswith("fcvt: warning")]
 check("\r" not in stderr and "\33[" not in stderr, "terminal control characters on a pipe")
-bad = [l for l in lines if not re.fullmatch(r"fcvt: \S+ \d{1,3} %", l)]
-check(not bad, f"lines not of the form 'fcvt: STAGE N %': {bad[:3]}")
+bad = [l for l in lines if not re.fullmatch(r"fcvt: \S+ (\d+/\d+ )?\d{1,3} %", l)]
+check(not bad, f"lines not of the form 'fcvt: STAGE [I/N] N %': {bad[:3]}")
+steps = [l for l in lines if re.fullmatch(r"fcvt: (lloyd|cvt|fcvt) \d+/\d+ \d{1,3} %", l)]
+check(steps, "no iteration steps (e.g. 'cvt 3/5') reported")
 stages = [l.split()[1] for l in lines]
 for stage in ["prepare", "cvt", "fcvt", "rdt", "done"]:
     check(stage in stages, f"stage {stage} not reported: {stages}")
