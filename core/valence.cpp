@@ -542,9 +542,13 @@ Vec3 ValenceOptimizer::surfaceNormal(const ClosestPoint& cp) const
 
 double ValenceOptimizer::faceSag(int f) const
 {
+    // The centroid and the edge midpoints: an edge across a crease sags most at its middle.
     const Face& t = faces_[f];
-    const Vec3 centroid = (pos_[t[0]] + pos_[t[1]] + pos_[t[2]]) / 3.0;
-    return (surface_.tree.closest(centroid).point - centroid).norm();
+    const Vec3 points[4] = {(pos_[t[0]] + pos_[t[1]] + pos_[t[2]]) / 3.0, 0.5 * (pos_[t[0]] + pos_[t[1]]),
+                            0.5 * (pos_[t[1]] + pos_[t[2]]), 0.5 * (pos_[t[2]] + pos_[t[0]])};
+    double sag = 0;
+    for (const Vec3& p : points) sag = std::max(sag, (surface_.tree.closest(p).point - p).norm());
+    return sag;
 }
 
 Vec3 ValenceOptimizer::faceUnitNormal(int f) const
