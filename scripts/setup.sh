@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   meshlab xvfb xauth python3
   x11-apps x11-utils
+  f3d optipng pngquant xdotool
   clang libclang-rt-14-dev libomp-dev
 )
 
