@@ -195,4 +195,6 @@ PY
 [ "${w:-0}" -gt 0 ] || die "no 3D view found in the window tree ($work/windows.txt)"
 python3 "$here/scripts/render_png.py" crop "$work/screen.png" "$out" "$x" "$y" "$w" "$h"
 command -v optipng >/dev/null && optipng -quiet -o2 "$out"
+read -r _ _ colours <<<"$(python3 "$here/scripts/render_png.py" info "$out")"
+[ "$colours" -gt 50 ] || die "the screenshot $out is nearly blank ($colours colours)"
 echo "$out: the 3D view ${w}x${h} at +$x+$y of the MeshLab window; $(grep -m1 "FCVT quality: Q_min" "$work/server.log" | sed 's/^.*FCVT quality: //')"
