@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <complex>
+#include <utility>
 
 namespace fieldcvt {
 
@@ -74,7 +75,10 @@ double fieldEnergy(const std::vector<Vec3>& seeds, const std::vector<RvdEdge>& e
     return energy;
 }
 
-EnergyFunction::EnergyFunction(const TriMesh& surface) : surface_(surface), diagram_(surface) {}
+EnergyFunction::EnergyFunction(const TriMesh& surface, std::vector<double> faceDensity)
+    : surface_(surface), faceDensity_(std::move(faceDensity)), diagram_(surface, faceDensity_)
+{
+}
 
 void EnergyFunction::setField(const DirectionField* field, const ClosestPointTree* tree, double lambda)
 {

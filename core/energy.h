@@ -46,7 +46,10 @@ double fieldEnergy(const std::vector<Vec3>& seeds, const std::vector<RvdEdge>& e
 //! Evaluates the energy and its gradient on one surface; owns the RVD work space.
 class EnergyFunction {
 public:
-    explicit EnergyFunction(const TriMesh& surface);
+    //! `faceDensity`: ρ per face of `surface` for eq. 1 (density.h), empty for ρ = 1.
+    explicit EnergyFunction(const TriMesh& surface, std::vector<double> faceDensity = {});
+    //! ρ per face (empty: uniform).
+    const std::vector<double>& faceDensity() const { return faceDensity_; }
 
     //! Sets the field (null: none) and the weight λ of E_field. With a field and λ = 0, E_field
     //! is measured (EnergyValue::field) but does not enter E_tot. The field lives on `surface`
@@ -78,6 +81,7 @@ public:
 
 private:
     const TriMesh& surface_;
+    std::vector<double> faceDensity_;
     RestrictedVoronoiDiagram diagram_;
     RvdResult rvd_;
     std::vector<Vec3> seeds_;

@@ -43,7 +43,7 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
             if (rvd.mass[i] > (uneven ? tiny : 0.0))
                 seeds[i] = rvd.moment[i] / rvd.mass[i];
             else
-                seeds[i] = sampleSurfaceUniform(surface, 1, rng())[0];
+                seeds[i] = sampleSurface(surface, 1, rng(), energy.faceDensity())[0];  // ∝ area × μ (density.h)
         }
     }
 }

@@ -3,6 +3,7 @@
 #include "closest_point.h"
 #include "energy.h"
 #include "field.h"
+#include "density.h"
 #include "errors.h"
 #include "mesh_check.h"
 #include "optimize.h"
@@ -47,6 +48,7 @@ void validate(const RemeshParams& p)
     if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds)) throw InvalidInputError("time limit must be >= 0 seconds");
     if (!(p.featureAngleDegrees >= 0 && p.featureAngleDegrees <= 180))
         throw InvalidInputError("feature angle must be between 0 and 180 degrees (0 = no sharp features)");
+    if (!std::isfinite(p.gradation) || p.gradation < 0) throw InvalidInputError("gradation must be a finite number >= 0");
     if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0)
         throw InvalidInputError("valence optimisation step counts must be >= 0");
 }
@@ -139,6 +141,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     TriMesh surface;
     std::vector<int> cleanIndex;  // input vertex -> surface vertex
     Normalisation frame;
+    std::vector<double> rho;  // CVT density per surface face (eq. 1), empty = uniform
     pipeline.run("prepare", [&] {
         InputReport report;
         surface = prepareInput(input, report);
@@ -152,6 +155,20 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         frame.centre = 0.5 * (lo + hi);
         frame.scale = std::sqrt(sampleCount / area);
         for (Vec3& p : surface.vertices) p = frame.toWork(p);
+
+        // Adaptive density (density.h): μ per surface vertex, normalised to an area-weighted
+        // mean of 1, so the scale above (mean cell area 1, sampleCount samples) stays right on
+        // average; cells are then ~1/μ in area. ρ = μ² per face enters eq. 1.
+        const bool curvature = params.density == DensitySource::Curvature && params.gradation > 0;
+        if (curvature || params.density == DensitySource::PerVertex) {
+            // Uniform target edge length at the working scale: unit-area cells of a regular
+            // triangulation, sqrt(2 / sqrt(3)).
+            const double edgeLength = std::sqrt(2 / std::sqrt(3.0));
+            std::vector<double> mu = curvature ? curvatureDensity(surface, params.gradation, edgeLength)
+                                               : densityOnSurface(params.vertexDensity, cleanIndex, surface.vertexCount());
+            normaliseDensity(surface, mu);
+            rho = faceDensity(surface, mu);
+        }
     });
 
     // The field is needed when E_field is used (in the FCVT iterations only: measuring it during
@@ -170,7 +187,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     const bool constrained = !border.empty() || !features.empty();
     const double expectedEvaluations = params.lloydIterations + 1.1 * (params.cvtIterations + params.fcvtIterations) +
                                        (constrained ? params.boundaryIterations : 0) + 2;
-    EnergyFunction energy(surface);
+    EnergyFunction energy(surface, rho);
     ClosestPointTree tree(surface);
     DirectionField field;
     std::string stage = "sampling";
@@ -225,7 +242,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     std::vector<SampleConstraint> sampleRoles;
     pipeline.run("sampling", [&] {
         if (params.initialSamples.empty()) {
-            seeds = sampleSurfaceUniform(surface, params.vertexCount, params.seed);
+            seeds = sampleSurface(surface, params.vertexCount, params.seed, rho);  // uniform when rho is empty
         } else {
             seeds.clear();
             for (const Vec3& x : params.initialSamples) seeds.push_back(frame.toWork(x));

