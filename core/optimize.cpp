@@ -25,6 +25,15 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
 {
     Eigen::VectorXd x, gradient;
     std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+    // With a density a cell's mass varies like μ at the optimum (area ~ 1/μ, mass ~ ρ·area = μ):
+    // the tiny-cell test allows for the density's range, so graded cells are not taken for a
+    // cluster.
+    const std::vector<double>& rho = energy.faceDensity();
+    double densityRange = 1;
+    if (!rho.empty()) {
+        const auto [lo, hi] = std::minmax_element(rho.begin(), rho.end());
+        if (*lo > 0) densityRange = std::sqrt(*hi / *lo);
+    }
     for (int it = 0; it < iterations; ++it) {
         x = flatten(seeds);
         energy.evaluate(x, gradient);
@@ -36,7 +45,7 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
         // in proportion to their size, which spreads the cluster in a few steps where plain Lloyd
         // steps would take hundreds (§5, "Uneven initial sampling"). An area-uniform start has
         // almost no such cells and is left to plain Lloyd steps.
-        const double tiny = kTinyCellFraction * totalMass / double(seeds.size());
+        const double tiny = kTinyCellFraction * totalMass / double(seeds.size()) / densityRange;
         const auto tinyCells = std::count_if(rvd.mass.begin(), rvd.mass.end(), [&](double m) { return m <= tiny; });
         const bool uneven = double(tinyCells) > kUnevenFraction * double(seeds.size());
         for (size_t i = 0; i < seeds.size(); ++i) {

@@ -21,9 +21,13 @@ namespace fieldcvt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-//! A face whose unit normal makes more than 60° with the surface normal (mean of its corners'
-//! surface normals) counts as folded, unless it was already that bad before the operation.
-constexpr double kMinNormalDot = 0.5;
+//! A face whose unit normal makes more than 32° with the surface normal (mean of its corners'
+//! surface normals) counts as folded, unless it was already that bad before the operation. (60°
+//! let operations bridge valleys and cut rounded rims: fertility 3000 d_H 1.01 % against 0.87 %
+//! at 32°, same V6%.)
+constexpr double kMinNormalDot = 0.85;
+//! The final relaxation moves a vertex at most this many mean edge lengths from where it started.
+constexpr double kMaxDrift = 0.25;
 //! The final relaxation moves a vertex by at most this fraction of the mean edge length per step.
 constexpr double kMaxRelaxStep = 0.25;
 //! The final relaxation moves a vertex this fraction of the way to the mean of its neighbours
@@ -1047,6 +1051,8 @@ void ValenceOptimizer::relax()
         dot = length > 0 ? faceUnitNormal(f).dot(reference) / length : -1.0;
     };
 
+    const std::vector<Vec3> startPos = pos_;
+    const double maxDrift = kMaxDrift * edgeLength_;
     for (int iteration = 0; iteration < params_.relaxIterations; ++iteration) {
         if (surface_.field && params_.fieldWeight > 0) {
 #pragma omp parallel for schedule(static)
@@ -1105,8 +1111,13 @@ void ValenceOptimizer::relax()
             if (length > maxStep) u *= maxStep / length;
             const Vec3 q = pos_[v] + u;
             if (role_[v] == VertexRole::Free) {
-                newClosest[v] = surface_.tree.closest(q);
-                newPos[v] = newClosest[v].point;
+                const ClosestPoint cp = surface_.tree.closest(q);
+                // The relaxation only evens the mesh out: a vertex drifting far from where it
+                // started slides off ridges and tips that it covered (camelhead's lips: d_H
+                // 0.74 -> 1.57 %), so it stops at kMaxDrift edge lengths.
+                if ((cp.point - startPos[v]).norm() > maxDrift) continue;
+                newClosest[v] = cp;
+                newPos[v] = cp.point;
             } else {
                 const std::vector<Segment>& line = role_[v] == VertexRole::Boundary ? surface_.border : surface_.features;
                 if (line.empty()) continue;
