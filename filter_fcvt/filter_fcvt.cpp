@@ -977,20 +977,22 @@ void FilterFcvtPlugin::logReport(const fieldcvt::RemeshResult& r, const QString&
             .arg(r.mesh.faceCount())
             .arg(r.evaluations)
             .toStdString());
-    Log(QString("FCVT metrics: Q_min %1, Q_avg %2, theta_min %3 deg, mean theta_min %4 deg, "
-                "theta_max %5 deg, %theta<30 %6, %theta>90 %7, V6% %8, d_RMS %9, d_H %10 "
-                "(fractions of the input diagonal)")
-            .arg(num(m.qMin))
-            .arg(num(m.qAvg))
-            .arg(num(m.thetaMin))
-            .arg(num(m.thetaMinAvg))
-            .arg(num(m.thetaMax))
-            .arg(num(m.pctLt30))
-            .arg(num(m.pctGt90))
-            .arg(num(m.v6Pct))
+    Log(QString("FCVT metrics: %1, d_RMS %2, d_H %3, d_boundary %4 (fractions of the input diagonal), "
+                "boundary valence 4: %5%")
+            .arg(qualityText(m))
             .arg(num(m.dRms))
             .arg(num(m.dH))
+            .arg(num(m.dBoundary))
+            .arg(num(m.boundaryV4Pct))
             .toStdString());
+    if (r.valence.v6Before > 0 || r.valence.v6After > 0)
+        Log(QString("FCVT valence optimisation: V6% %1 -> %2 (%3 flips, %4 collapses, %5 splits)")
+                .arg(num(r.valence.v6Before))
+                .arg(num(r.valence.v6After))
+                .arg(r.valence.flips)
+                .arg(r.valence.collapses)
+                .arg(r.valence.splits)
+                .toStdString());
     QString times = "FCVT times:";
     for (const fieldcvt::StageTime& t : r.stageTimes)
         times += QString(" %1 %2 s,").arg(QString::fromStdString(t.stage)).arg(num(t.seconds, 3));
