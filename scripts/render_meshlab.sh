@@ -64,7 +64,7 @@ case "$in" in
 esac
 
 # The remeshing script with the filter's defaults for this input, then the quality report.
-PYTHONPATH="$here/scripts" python3 - "$here/resources/fcvt-remesh.mlx" "$here/resources/fcvt-quality.mlx" "$input" "$work/picture.mlx" <<'PY'
+PYTHONDONTWRITEBYTECODE=1 PYTHONPATH="$here/scripts" python3 - "$here/resources/fcvt-remesh.mlx" "$here/resources/fcvt-quality.mlx" "$input" "$work/picture.mlx" <<'PY'
 import math, re, sys
 import render
 remesh, quality, mesh, out = sys.argv[1:5]

@@ -8,6 +8,7 @@
 # Exits 77 (CTest: skipped) when f3d or xvfb-run is not installed.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
+export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in scripts/
 skip() { echo "SKIP: $*"; exit 77; }
 fail() { echo "FAIL: $*" >&2; exit 1; }
 command -v f3d >/dev/null || skip "f3d not installed (Debian package f3d)"
