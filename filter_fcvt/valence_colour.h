@@ -9,7 +9,7 @@
 
 namespace fcvt_plugin {
 
-//! The palette (also scripts/render_mesh.py's): below target blue, above target pink, on target
+//! The palette (also scripts/render.py's): below target blue, above target pink, on target
 //! white; vertices on no face (valence 0) light grey.
 inline const vcg::Color4b kValenceLow(30, 90, 235, 255);
 inline const vcg::Color4b kValenceHigh(235, 40, 175, 255);
