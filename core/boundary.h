@@ -13,6 +13,9 @@ using Segment = std::pair<Vec3, Vec3>;
 //! The edges of `mesh` that have exactly one face, as segments.
 std::vector<Segment> boundarySegments(const TriMesh& mesh);
 
+//! Closest point to p on one segment; `squaredDistance` receives its squared distance to p.
+Vec3 closestPointOnSegment(const Vec3& p, const Segment& segment, double* squaredDistance = nullptr);
+
 //! Closest point to p on a set of segments (p itself if the set is empty).
 Vec3 closestPointOnSegments(const Vec3& p, const std::vector<Segment>& segments);
 

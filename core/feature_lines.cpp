@@ -44,15 +44,6 @@ std::vector<EdgeFace> edgeFaces(const TriMesh& mesh)
     return list;
 }
 
-Vec3 closestOnSegment(const Vec3& p, const Segment& s, double* squaredDistance)
-{
-    const Vec3 ab = s.second - s.first;
-    const double len2 = ab.squaredNorm();
-    const double t = len2 > 0 ? std::clamp((p - s.first).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    const Vec3 q = s.first + t * ab;
-    *squaredDistance = (q - p).squaredNorm();
-    return q;
-}
 
 // Per vertex, how far (degrees) a polyline made of `edges` turns there: 0 going straight on,
 // 180 where more than two of its edges meet, 0 off the polyline.
@@ -257,7 +248,7 @@ Vec3 projectOnPiece(const CurvePiece& piece, const std::vector<Segment>& segment
     double bestDist2 = std::numeric_limits<double>::infinity();
     for (int s : piece.segments) {
         double d2 = 0;
-        const Vec3 q = closestOnSegment(centroid, segments[size_t(s)], &d2);
+        const Vec3 q = closestPointOnSegment(centroid, segments[size_t(s)], &d2);
         if (d2 < bestDist2) bestDist2 = d2, best = q;
     }
     return best;
@@ -389,7 +380,7 @@ double featureDeviation(const FeatureLines& features, const TriMesh& mesh, doubl
             double best = std::numeric_limits<double>::infinity();
             for (size_t j = 0; j < found; ++j) {
                 double dist2 = 0;
-                closestOnSegment(p, edges[index[j]], &dist2);
+                closestPointOnSegment(p, edges[index[j]], &dist2);
                 best = std::min(best, dist2);
             }
             // Guard the kd shortcut: if the 8th midpoint is still close enough to hide a nearer
@@ -397,7 +388,7 @@ double featureDeviation(const FeatureLines& features, const TriMesh& mesh, doubl
             if (found == kNear && std::sqrt(d2[found - 1]) < std::sqrt(best) + 0.5 * longest) {
                 for (const Segment& edge : edges) {
                     double dist2 = 0;
-                    closestOnSegment(p, edge, &dist2);
+                    closestPointOnSegment(p, edge, &dist2);
                     best = std::min(best, dist2);
                 }
             }
