@@ -65,6 +65,60 @@ int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex)
 
 namespace {
 
+// A lens piece: a small piece of cell i lying across the border of two cells j and l only. The
+// surface crosses the Voronoi edge of (i, j, l) twice close together (a fold of the input, a
+// cell poking through a thin part), so the piece is bounded by the bisectors of (i, j) and
+// (i, l) alone; its two RVD vertices give the triangles (p, j, l) and (p, l, j): the same
+// triangle twice with opposite orientations (a pillow) at a vertex p of degree 2, which no
+// manifold can hold. The RDT edge (j, l) then has these two faces besides its regular ones
+// (j and l are also neighbours outside the lens), so the edge check below would remove all
+// of them and leave a hole. Dropping the pillow instead (the lens area counts as j's and l's)
+// keeps the regular faces of (j, l). Only done when (j, l) has other faces, so a surface that
+// is nothing but a pillow (three samples) keeps it. Returns the number of lenses removed.
+int removeLensPieces(int n, std::vector<std::array<int, 3>>& faces)
+{
+    std::vector<int> degree(n, 0);
+    for (const auto& t : faces)
+        for (int v : t) ++degree[v];
+    std::vector<long long> undirected;
+    undirected.reserve(faces.size() * 3);
+    for (const auto& t : faces)
+        for (int k = 0; k < 3; ++k) undirected.push_back(edgeKey(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]), n));
+    std::sort(undirected.begin(), undirected.end());
+    // Faces at the candidates of degree 2, as (vertex, face index): the two of a vertex adjacent.
+    std::vector<std::pair<int, int>> star;
+    for (int f = 0; f < static_cast<int>(faces.size()); ++f)
+        for (int v : faces[f])
+            if (degree[v] == 2) star.push_back({v, f});
+    std::sort(star.begin(), star.end());
+    std::vector<char> removed(faces.size(), 0);
+    int lenses = 0;
+    for (size_t r = 0; r + 1 < star.size(); r += 2) {
+        const int v = star[r].first, f = star[r].second, g = star[r + 1].second;
+        if (removed[f] || removed[g]) continue;
+        // f = (v, a, b) rotated to start at v; g must be (v, b, a).
+        auto rotated = [&](int face) {
+            std::array<int, 3> t = faces[face];
+            while (t[0] != v) t = {t[1], t[2], t[0]};
+            return t;
+        };
+        const std::array<int, 3> tf = rotated(f), tg = rotated(g);
+        if (tf[1] != tg[2] || tf[2] != tg[1]) continue;
+        const long long key = edgeKey(std::min(tf[1], tf[2]), std::max(tf[1], tf[2]), n);
+        const auto range = std::equal_range(undirected.begin(), undirected.end(), key);
+        if (range.second - range.first <= 2) continue;  // nothing else on (a, b): keep the pillow
+        removed[f] = removed[g] = 1;
+        ++lenses;
+    }
+    if (lenses == 0) return 0;
+    std::vector<std::array<int, 3>> kept;
+    kept.reserve(faces.size());
+    for (size_t f = 0; f < faces.size(); ++f)
+        if (!removed[f]) kept.push_back(faces[f]);
+    faces.swap(kept);
+    return lenses;
+}
+
 // Builds the output from triangles over `n` vertex candidates (samples, or pieces of cells);
 // `seedOf` gives the sample of a candidate, `position` its output position.
 template <class SeedOf, class Position>
@@ -78,6 +132,7 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
     faces.reserve(triangles.size());
     for (const auto& t : triangles)
         if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) faces.push_back(t);
+    result.lensPieces = removeLensPieces(n, faces);
 
     for (int pass = 0; pass < 8; ++pass) {
         std::vector<long long> undirected, directed;

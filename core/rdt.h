@@ -17,11 +17,16 @@ struct RdtResult {
     int removedFaces = 0;           //!< faces removed to keep the output edge-manifold
     int splitVertices = 0;          //!< extra vertices made by splitting non-manifold vertices
     int multiPieceSeeds = 0;        //!< samples whose restricted cell is in several pieces (one vertex each)
+    //! Lens pieces dropped: a piece of a cell across the border of two other cells only (a fold
+    //! of the input or a thin part crossing their Voronoi edge twice), whose two faces are the same
+    //! triangle with both orientations; kept, they would tear the edge of the two cells open.
+    int lensPieces = 0;
     std::vector<std::string> warnings;
 };
 
-//! Builds the output mesh from the RVD's triangles: removes faces that would make an edge
-//! non-manifold (more than two faces, or two faces with the same orientation), drops samples
+//! Builds the output mesh from the RVD's triangles: drops lens pieces (RdtResult::lensPieces),
+//! removes faces that would make an edge non-manifold (more than two faces, or two faces with
+//! the same orientation), drops samples
 //! that no face uses and places each vertex at its sample's closest point on the input surface
 //! (which keeps the approximation error at CVT level).
 //! Gives every fan of faces around a vertex its own vertex (same position and sample), so the

@@ -8,6 +8,10 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
+#include <map>
+#include <vector>
+
 using namespace fieldcvt;
 
 TEST(Rdt, BowtieVertexIsSplitIntoOneVertexPerFan)
@@ -197,4 +201,127 @@ TEST(Rdt, PiecesDoNotDependOnThreadCount)
     EXPECT_EQ(one.pieceTriangles, two.pieceTriangles);
     ASSERT_EQ(one.piecePoint.size(), two.piecePoint.size());
     for (size_t p = 0; p < one.piecePoint.size(); ++p) EXPECT_EQ(one.piecePoint[p], two.piecePoint[p]);
+}
+
+TEST(Rdt, LensPieceAcrossTwoCellsIsDroppedNotTheirEdge)
+{
+    // Cut from fcvt remesh of nefertiti.obj at 40000 vertices (working frame, translated):
+    // the input has a folded triangle (face {12, 10, 7}, its normal opposite to its
+    // neighbours'), through which the cell of sample 8 pokes. Besides its main piece, that cell
+    // has a small lens on the border of the cells of samples 12 and 13 (the surface crosses
+    // their Voronoi edge twice): the triangles (lens, 12, 13) and (lens, 13, 12). Kept, they
+    // gave edge (12, 13) four faces, all removed: a hole in a closed output (two on the whole
+    // model). The lens is dropped; the edge keeps its two regular faces.
+    TriMesh surface;
+    surface.vertices = {
+        {-0.33870867015035699, 1.4869102439033739, 2.3254128847402527},
+        {-0.09481686936336331, 0.8215444245181498, 1.2036915365506573},
+        {0.23300414734007191, 1.5106386047793396, 1.8916570275247295},
+        {-1.070545361248044, 0.51911144970356915, 1.5770450937397271},
+        {0.67933654358069262, 1.1788690008550695, 1.0822278430181385},
+        {-1.1774754793761382, -0.56062637394757964, 0.084293940900991515},
+        {-2.1594122601446628, -0.5909264211697316, 0.78155709699348819},
+        {-0.20297225089869642, 0.22676665393914952, 0.53729824817605021},
+        {-2.5666815863386176, -1.3915633783069001, -0.2873986077958719},
+        {0.75656165708933898, 0.5528294242906, 0.26782094295217007},
+        {2.0364154806884471e-11, 4.8220982762359199e-11, 4.2902570385194849e-11},
+        {1.5146854254415878, 1.1704391753384833, 0.51871353777374196},
+        {0.50158772711549204, -0.33678050641827006, -0.84294737341389947},
+        {1.9215594946696655, 0.96627285677606523, -0.080643372700457405},
+        {-2.7597969714780746, -1.9217250976455578, -1.0088822877201551},
+        {1.532773658580286, 0.30094088811336128, -0.74239280656328788},
+        {-0.56902367624881478, -1.2935608904383109, -1.5242791183838449},
+        {1.2473656059735241, -0.15604486149555363, -1.2169643383903761},
+        {-1.9068589887007157, -2.0048584897129942, -1.7041499105332036},
+        {0.68033182119670599, -0.86475221675791403, -1.962015422323752},
+    };
+    surface.faces = {
+        {0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {1, 3, 5}, {3, 6, 5}, {7, 4, 1},
+        {1, 5, 7}, {8, 5, 6}, {9, 7, 10}, {4, 7, 9}, {11, 4, 9}, {12, 10, 7},
+        {12, 9, 10}, {11, 9, 13}, {12, 7, 5}, {14, 5, 8}, {15, 13, 9}, {9, 12, 15},
+        {12, 5, 16}, {17, 15, 12}, {16, 5, 18}, {18, 5, 14}, {17, 12, 19}, {19, 12, 16},
+    };
+    const std::vector<Vec3> seeds = {
+        {-1.9816665365345685, -1.2948279289462459, -0.53477517048764156},
+        {-1.9330513835587375, -0.25866157060988826, 1.0165342050242501},
+        {0.49132694978685976, -0.93837146357164869, -1.9499946008380888},
+        {1.6057581329593731, 1.5126277981869301, 0.87623574454128317},
+        {1.0068385939963314, -0.2999089747452004, -1.2655954433890244},
+        {-1.4507065882197239, -0.63779240551896876, 0.15215333494501238},
+        {0.016494609502863966, -0.66875381695753155, -1.003021342520249},
+        {-0.91613942845821583, 0.058490607556430874, 0.77598291128923336},
+        {-0.46740386845964821, -0.32665005340726871, -0.099062965638026412},
+        {-0.5351013673483962, -1.295318960230734, -1.5990709378824448},
+        {1.0720217834317047, 0.71993606440402225, 0.23645028373967136},
+        {-0.99279068651465252, -0.98643410334887527, -0.73294549091379935},
+        {0.076958030427935142, 0.36600365041898719, 0.49189606878540815},
+        {0.49521653879377325, -0.0068845891759305999, -0.36220054332208207},
+        {0.62848282800965549, 1.1516244187529558, 1.0953174499901195},
+        {2.0367508301936965, 1.0857175933216947, 0.011288908064983616},
+        {-1.3878543145390587, 0.4441991140076329, 1.6114767808642583},
+        {1.522594440755487, 0.33763549323542463, -0.67705500450833966},
+        {-0.35515982194690565, 0.7823974532528748, 1.3596714723854717},
+    };
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult result;
+    RvdOptions options;
+    options.triangles = true;
+    rvd.compute(seeds, options, result);
+    // The configuration: sample 8 has two pieces, one of them in just the two triangles.
+    int lens = -1;
+    for (size_t p = 0; p < result.pieceSeed.size(); ++p) {
+        if (result.pieceSeed[p] != 8) continue;
+        int faces = 0;
+        for (const auto& t : result.pieceTriangles) faces += std::count(t.begin(), t.end(), static_cast<int>(p));
+        if (faces == 2) lens = static_cast<int>(p);
+    }
+    ASSERT_GE(lens, 0) << "the lens piece of sample 8";
+
+    ClosestPointTree tree(surface);
+    const RdtResult rdt = extractRdt(seeds, result, tree);
+    EXPECT_EQ(rdt.removedFaces, 0);
+    EXPECT_EQ(rdt.lensPieces, 1);
+    EXPECT_EQ(rdt.splitVertices, 0);
+    EXPECT_TRUE(computeTopology(rdt.mesh).manifold());
+    // Edge (12, 13) has two faces, (8, 13, 12) and (10, 12, 13), in opposite directions.
+    std::vector<int> third;
+    for (const Face& f : rdt.mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            const int a = rdt.seedOfVertex[f[k]], b = rdt.seedOfVertex[f[(k + 1) % 3]];
+            if ((a == 12 && b == 13) || (a == 13 && b == 12)) third.push_back(rdt.seedOfVertex[f[(k + 2) % 3]] * (a == 12 ? 1 : -1));
+        }
+    std::sort(third.begin(), third.end());
+    EXPECT_EQ(third, (std::vector<int>{-8, 10}));
+}
+
+TEST(Rdt, PillowAloneIsKept)
+{
+    // Three samples on a closed surface: the RDT is one triangle with both orientations. Its
+    // vertices have degree 2 but nothing else is on its edges: it stays (it is the surface).
+    const std::vector<Vec3> seeds = {{1, 0, 0}, {-0.5, 0.8, 0}, {-0.5, -0.8, 0}};
+    TriMesh surface;
+    surface.vertices = {{-5, -5, 0}, {5, -5, 0}, {0, 5, 0}};
+    surface.faces = {{0, 1, 2}};
+    ClosestPointTree tree(surface);
+    const RdtResult r = extractRdt(seeds, {{0, 1, 2}, {0, 2, 1}}, tree);
+    EXPECT_EQ(r.lensPieces, 0);
+    EXPECT_EQ(r.removedFaces, 0);
+    EXPECT_EQ(r.mesh.faceCount(), 2);
+}
+
+TEST(Rdt, PillowOnAnEdgeWithOtherFacesIsDropped)
+{
+    // A fan of four faces around candidate 0 (a disk) and a pillow of candidate 5 on its edge
+    // (0, 1): without the lens rule, edge (0, 1) has four faces and all are removed.
+    const std::vector<Vec3> seeds = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0.5, 0, 0}};
+    TriMesh surface;
+    surface.vertices = {{-5, -5, 0}, {5, -5, 0}, {0, 5, 0}};
+    surface.faces = {{0, 1, 2}};
+    ClosestPointTree tree(surface);
+    const RdtResult r = extractRdt(seeds, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}, {5, 0, 1}, {5, 1, 0}}, tree);
+    EXPECT_EQ(r.lensPieces, 1);
+    EXPECT_EQ(r.removedFaces, 0);
+    EXPECT_EQ(r.mesh.faceCount(), 4);
+    EXPECT_EQ(r.droppedSeeds, 1);  // candidate 5 was only the lens
+    EXPECT_TRUE(computeTopology(r.mesh).manifold());
 }
