@@ -1,5 +1,7 @@
 #include "boundary.h"
 
+#include "mesh_edges.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -7,18 +9,10 @@ namespace fieldcvt {
 
 std::vector<Segment> boundarySegments(const TriMesh& mesh)
 {
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(mesh.faces.size() * 3);
-    for (const Face& t : mesh.faces)
-        for (int k = 0; k < 3; ++k) edges.push_back(std::minmax(t[k], t[(k + 1) % 3]));
-    std::sort(edges.begin(), edges.end());
+    const EdgeTable edges = buildEdgeTable(mesh);
     std::vector<Segment> segments;
-    for (size_t r = 0; r < edges.size();) {
-        size_t e = r;
-        while (e < edges.size() && edges[e] == edges[r]) ++e;
-        if (e - r == 1) segments.push_back({mesh.vertices[edges[r].first], mesh.vertices[edges[r].second]});
-        r = e;
-    }
+    for (int e = 0; e < edges.edgeCount(); ++e)
+        if (edges.isBorder(e)) segments.push_back({mesh.vertices[edges.ends[e][0]], mesh.vertices[edges.ends[e][1]]});
     return segments;
 }
 

@@ -1,6 +1,7 @@
 #include "feature_lines.h"
 
 #include "errors.h"
+#include "mesh_edges.h"
 
 #include <nanoflann.hpp>
 
@@ -24,26 +25,6 @@ struct PointCloud {
     bool kdtree_get_bbox(BBox&) const { return false; }
 };
 using PointTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3, uint32_t>;
-
-// Every undirected edge with the faces using it: (smaller vertex, larger vertex, face), sorted.
-struct EdgeFace {
-    int a, b, face;
-    bool operator<(const EdgeFace& o) const { return a != o.a ? a < o.a : b != o.b ? b < o.b : face < o.face; }
-};
-
-std::vector<EdgeFace> edgeFaces(const TriMesh& mesh)
-{
-    std::vector<EdgeFace> list;
-    list.reserve(mesh.faces.size() * 3);
-    for (int f = 0; f < mesh.faceCount(); ++f)
-        for (int k = 0; k < 3; ++k) {
-            const auto [a, b] = std::minmax(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]);
-            list.push_back({a, b, f});
-        }
-    std::sort(list.begin(), list.end());
-    return list;
-}
-
 
 // Per vertex, how far (degrees) a polyline made of `edges` turns there: 0 going straight on,
 // 180 where more than two of its edges meet, 0 off the polyline.
@@ -74,31 +55,27 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
 {
     FeatureLines lines;
     if (ignoredUserEdges) *ignoredUserEdges = 0;
-    const std::vector<EdgeFace> list = edgeFaces(surface);
+    const EdgeTable table = buildEdgeTable(surface);
     std::vector<char> onBorder(surface.vertices.size(), 0);
     std::vector<std::array<int, 2>> borderEdges;
-    std::vector<std::array<int, 2>> all;  // distinct edges of the surface
     const double cosLimit = std::cos(std::min(angleDegrees, 180.0) * kPi / 180.0);
-    for (size_t r = 0; r < list.size();) {
-        size_t e = r;
-        while (e < list.size() && list[e].a == list[r].a && list[e].b == list[r].b) ++e;
-        all.push_back({list[r].a, list[r].b});
-        if (e - r == 1) {
-            onBorder[size_t(list[r].a)] = onBorder[size_t(list[r].b)] = 1;
-            borderEdges.push_back({list[r].a, list[r].b});
-        } else if (e - r == 2 && angleDegrees > 0) {
+    for (int e = 0; e < table.edgeCount(); ++e) {
+        const auto [a, b] = table.ends[e];
+        if (table.isBorder(e)) {
+            onBorder[size_t(a)] = onBorder[size_t(b)] = 1;
+            borderEdges.push_back({a, b});
+        } else if (table.faceCount(e) == 2 && angleDegrees > 0) {
             // The dihedral angle here is the angle between the two face normals: 0 on a flat
             // stretch, 90° on a cube's edge.
-            const Vec3 n1 = faceNormal(surface, list[r].face).normalized();
-            const Vec3 n2 = faceNormal(surface, list[r + 1].face).normalized();
-            if (n1.dot(n2) <= cosLimit) lines.edges.push_back({list[r].a, list[r].b});
+            const Vec3 n1 = faceNormal(surface, table.face(e, 0)).normalized();
+            const Vec3 n2 = faceNormal(surface, table.face(e, 1)).normalized();
+            if (n1.dot(n2) <= cosLimit) lines.edges.push_back({a, b});
         }
-        r = e;
     }
     for (const auto& edge : userEdges) {
-        const auto [a, b] = std::minmax(edge[0], edge[1]);
-        if (std::binary_search(all.begin(), all.end(), std::array<int, 2>{a, b}))
-            lines.edges.push_back({a, b});
+        const int e = table.find(edge[0], edge[1]);
+        if (e >= 0)
+            lines.edges.push_back(table.ends[e]);
         else if (ignoredUserEdges)
             ++*ignoredUserEdges;
     }
@@ -341,19 +318,16 @@ double featureDeviation(const FeatureLines& features, const TriMesh& mesh, doubl
     if (features.segments.empty()) return 0;
     // The output edges that count: sharp ones (or all).
     std::vector<Segment> edges;
-    const std::vector<EdgeFace> list = edgeFaces(mesh);
+    const EdgeTable table = buildEdgeTable(mesh);
     const double cosLimit = angleDegrees > 0 ? std::cos(std::min(angleDegrees, 180.0) * kPi / 180.0) : 2.0;
-    for (size_t r = 0; r < list.size();) {
-        size_t e = r;
-        while (e < list.size() && list[e].a == list[r].a && list[e].b == list[r].b) ++e;
-        bool keep = angleDegrees <= 0 || e - r != 2;  // border / non-manifold edges count as sharp
+    for (int e = 0; e < table.edgeCount(); ++e) {
+        bool keep = angleDegrees <= 0 || table.faceCount(e) != 2;  // border / non-manifold edges count as sharp
         if (!keep) {
-            const Vec3 n1 = faceNormal(mesh, list[r].face).normalized();
-            const Vec3 n2 = faceNormal(mesh, list[r + 1].face).normalized();
+            const Vec3 n1 = faceNormal(mesh, table.face(e, 0)).normalized();
+            const Vec3 n2 = faceNormal(mesh, table.face(e, 1)).normalized();
             keep = n1.dot(n2) <= cosLimit;
         }
-        if (keep) edges.push_back({mesh.vertices[size_t(list[r].a)], mesh.vertices[size_t(list[r].b)]});
-        r = e;
+        if (keep) edges.push_back({mesh.vertices[size_t(table.ends[e][0])], mesh.vertices[size_t(table.ends[e][1])]});
     }
     if (edges.empty()) return std::numeric_limits<double>::infinity();
     // Brute force over edge midpoints through a kd-tree, then exact distance to the few nearest.

@@ -3,6 +3,7 @@
 #include "curvature.h"
 #include "errors.h"
 #include "field_hierarchy.h"
+#include "mesh_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,46 +31,6 @@ void checkField(const TriMesh& mesh, const DirectionField& field)
                                 std::to_string(mesh.vertexCount()) + " vertices");
 }
 
-// An undirected edge and the (at most two, for a manifold mesh) faces on it; `faceCount` counts
-// all of them.
-struct Edge {
-    int a, b;  // a < b
-    int face0 = -1, face1 = -1;
-    int faceCount = 0;
-};
-
-// Unique edges in (a, b) order, and for each face edge k (from corner k to k + 1) its edge index.
-std::vector<Edge> buildEdges(const TriMesh& mesh, std::vector<std::array<int, 3>>* faceEdges = nullptr)
-{
-    struct Entry {
-        int a, b, face, local;
-    };
-    std::vector<Entry> entries;
-    entries.reserve(3 * mesh.faces.size());
-    for (int f = 0; f < mesh.faceCount(); ++f)
-        for (int k = 0; k < 3; ++k) {
-            const int u = mesh.faces[f][k], v = mesh.faces[f][(k + 1) % 3];
-            entries.push_back({std::min(u, v), std::max(u, v), f, k});
-        }
-    std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-        return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.face < y.face;
-    });
-    std::vector<Edge> edges;
-    if (faceEdges) faceEdges->assign(mesh.faces.size(), {-1, -1, -1});
-    for (std::size_t s = 0; s < entries.size(); ++s) {
-        const Entry& e = entries[s];
-        if (edges.empty() || edges.back().a != e.a || edges.back().b != e.b) edges.push_back({e.a, e.b});
-        Edge& edge = edges.back();
-        if (edge.faceCount == 0)
-            edge.face0 = e.face;
-        else if (edge.faceCount == 1)
-            edge.face1 = e.face;
-        ++edge.faceCount;
-        if (faceEdges) (*faceEdges)[e.face][e.local] = static_cast<int>(edges.size()) - 1;
-    }
-    return edges;
-}
-
 // Boundary edges and edges whose dihedral angle exceeds `sharpAngle` fix the direction of their
 // vertices to the compatible average of their tangents (Jakob et al. 2015 constrain the field to
 // boundaries and creases the same way).
@@ -85,18 +46,20 @@ FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& n
         faceNormals[f] = len > 0 ? Vec3(fn / len) : Vec3::Zero();
     }
     std::vector<std::pair<int, Vec3>> tangents;  // (vertex, edge tangent), in edge order
-    for (const Edge& e : buildEdges(mesh)) {
-        bool constrained = e.faceCount == 1 && alignToBorder;
-        if (e.faceCount == 2 && sharpAngle > 0) {
+    const EdgeTable edges = buildEdgeTable(mesh);
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        bool constrained = edges.isBorder(e) && alignToBorder;
+        if (edges.faceCount(e) == 2 && sharpAngle > 0) {
             // Dihedral angle = angle between the face normals (0 on a flat edge).
-            constrained = faceNormals[e.face0].dot(faceNormals[e.face1]) < cosSharp;
+            constrained = faceNormals[edges.face(e, 0)].dot(faceNormals[edges.face(e, 1)]) < cosSharp;
         }
         if (!constrained) continue;
-        const Vec3 t = mesh.vertices[e.b] - mesh.vertices[e.a];
+        const auto [a, b] = edges.ends[e];
+        const Vec3 t = mesh.vertices[b] - mesh.vertices[a];
         const double len = t.norm();
         if (!(len > 0)) continue;
-        tangents.emplace_back(e.a, t / len);
-        tangents.emplace_back(e.b, t / len);
+        tangents.emplace_back(a, t / len);
+        tangents.emplace_back(b, t / len);
     }
     std::stable_sort(tangents.begin(), tangents.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
 
@@ -179,8 +142,8 @@ double extrinsicEnergy(const TriMesh& mesh, const DirectionField& field)
 {
     checkField(mesh, field);
     double energy = 0;
-    for (const Edge& e : buildEdges(mesh))
-        energy += rosy::edgeEnergy(field.directions[e.a], field.normals[e.a], field.directions[e.b], field.normals[e.b]);
+    for (const auto& [a, b] : buildEdgeTable(mesh).ends)
+        energy += rosy::edgeEnergy(field.directions[a], field.normals[a], field.directions[b], field.normals[b]);
     return energy;
 }
 
@@ -356,14 +319,13 @@ std::vector<Singularity> findSingularities(const TriMesh& mesh, const DirectionF
     }
 
     // δ' once per edge, oriented a → b (a < b).
-    std::vector<std::array<int, 3>> faceEdges;
-    const std::vector<Edge> edges = buildEdges(mesh, &faceEdges);
-    std::vector<double> turn(edges.size(), 0.0);
-    std::vector<unsigned char> done(edges.size(), 0);
+    const EdgeTable edges = buildEdgeTable(mesh);
+    std::vector<double> turn(edges.edgeCount(), 0.0);
+    std::vector<unsigned char> done(edges.edgeCount(), 0);
     const double sixth = kPi / 3;
     for (int f = 0; f < nf; ++f)
         for (int k = 0; k < 3; ++k) {
-            const int e = faceEdges[f][k];
+            const int e = edges.edgeOf(f, k);
             if (done[e]) continue;
             done[e] = 1;
             const int i = mesh.faces[f][k], j = mesh.faces[f][(k + 1) % 3];
@@ -371,15 +333,15 @@ std::vector<Singularity> findSingularities(const TriMesh& mesh, const DirectionF
             double delta = thetaField[j] - thetaField[i] - rho;
             delta -= sixth * std::round(delta / sixth);
             if (delta <= -sixth / 2) delta += sixth;  // half-open (−π/6, π/6]
-            turn[e] = i == edges[e].a ? delta : -delta;
+            turn[e] = i == edges.ends[e][0] ? delta : -delta;
         }
 
     std::vector<Singularity> result;
     for (int f = 0; f < nf; ++f) {
         double sum = 0;
         for (int k = 0; k < 3; ++k) {
-            const int i = mesh.faces[f][k], e = faceEdges[f][k];
-            sum += i == edges[e].a ? turn[e] : -turn[e];
+            const int i = mesh.faces[f][k], e = edges.edgeOf(f, k);
+            sum += i == edges.ends[e][0] ? turn[e] : -turn[e];
             sum += (scale[i] - 1) * alpha[3 * f + k];
         }
         const int index = static_cast<int>(std::lround(sum / sixth));

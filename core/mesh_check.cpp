@@ -1,6 +1,7 @@
 #include "mesh_check.h"
 
 #include "errors.h"
+#include "mesh_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,27 +38,6 @@ struct DisjointSets {
         if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
 };
-
-// One side of an undirected edge: the face and whether it runs from the smaller vertex index
-// to the larger one.
-struct EdgeSide {
-    int lo, hi, face;
-    bool forward;
-    bool operator<(const EdgeSide& o) const { return std::tie(lo, hi, face) < std::tie(o.lo, o.hi, o.face); }
-};
-
-std::vector<EdgeSide> edgeSides(const std::vector<Face>& faces)
-{
-    std::vector<EdgeSide> sides;
-    sides.reserve(faces.size() * 3);
-    for (int f = 0; f < static_cast<int>(faces.size()); ++f)
-        for (int k = 0; k < 3; ++k) {
-            const int a = faces[f][k], b = faces[f][(k + 1) % 3];
-            sides.push_back({std::min(a, b), std::max(a, b), f, a < b});
-        }
-    std::sort(sides.begin(), sides.end());
-    return sides;
-}
 
 int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
 
@@ -150,22 +130,14 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
     const int faceCount = static_cast<int>(faces.size());
 
     // 3. Non-manifold edges: more than two faces on one edge cannot be remeshed as one surface.
-    std::vector<EdgeSide> sides = edgeSides(faces);
+    const EdgeTable edges = buildEdgeTable(faces, n);
     {
-        int nonManifold = 0;
-        std::pair<int, int> first{-1, -1};
-        for (size_t r = 0; r < sides.size();) {
-            size_t e = r;
-            while (e < sides.size() && sides[e].lo == sides[r].lo && sides[e].hi == sides[r].hi) ++e;
-            if (e - r > 2) {
-                if (nonManifold == 0) first = {sides[r].lo, sides[r].hi};
-                ++nonManifold;
-            }
-            r = e;
-        }
+        int nonManifold = 0, first = -1;
+        for (int e = 0; e < edges.edgeCount(); ++e)
+            if (edges.isNonManifold(e) && nonManifold++ == 0) first = e;
         if (nonManifold > 0)
             throw InvalidInputError(std::to_string(nonManifold) + " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
-                                    vertexAt(input, first.first) + " and " + vertexAt(input, first.second));
+                                    vertexAt(input, edges.ends[first][0]) + " and " + vertexAt(input, edges.ends[first][1]));
     }
 
     // Neighbours across each edge (at most one now), and whether both faces run along the
@@ -177,13 +149,13 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
     };
     std::vector<std::array<Across, 3>> across(faceCount);
     std::vector<int> acrossCount(faceCount, 0);
-    for (size_t r = 0; r + 1 < sides.size(); ++r) {
-        const EdgeSide& s = sides[r];
-        const EdgeSide& t = sides[r + 1];
-        if (s.lo != t.lo || s.hi != t.hi) continue;
-        across[s.face][acrossCount[s.face]++] = {t.face, s.forward == t.forward, s.lo, s.hi};
-        across[t.face][acrossCount[t.face]++] = {s.face, s.forward == t.forward, s.lo, s.hi};
-        ++r;
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        if (edges.faceCount(e) != 2) continue;
+        const int s = edges.face(e, 0), t = edges.face(e, 1);
+        const bool same = edges.firstTwoSameDirection(faces, e);
+        const auto [lo, hi] = edges.ends[e];
+        across[s][acrossCount[s]++] = {t, same, lo, hi};
+        across[t][acrossCount[t]++] = {s, same, lo, hi};
     }
 
     // 4. Orientation: per connected component, a breadth-first walk from its first face flips

@@ -2,6 +2,7 @@
 
 #include "boundary.h"
 #include "feature_lines.h"
+#include "mesh_edges.h"
 
 #include "closest_point.h"
 #include "errors.h"
@@ -61,49 +62,6 @@ struct DisjointSets {
     }
 };
 
-//! Undirected edges of the mesh and, for each, the half-edges (corners) that use it.
-//! Half-edge h = 3 f + k goes from faces[f][k] to faces[f][(k + 1) % 3].
-struct EdgeTable {
-    std::vector<int> cornerEdge;      //!< per half-edge, its edge; -1 in faces that repeat a vertex
-    std::vector<int> edgeFirst;       //!< CSR offsets into edgeHalfEdges, size edges + 1
-    std::vector<int> edgeHalfEdges;   //!< half-edges grouped by edge, increasing within an edge
-    std::vector<std::array<int, 2>> ends;  //!< (smaller, larger) vertex index
-
-    int edgeCount() const { return static_cast<int>(ends.size()); }
-    int faceCount(int e) const { return edgeFirst[e + 1] - edgeFirst[e]; }
-};
-
-EdgeTable buildEdges(const TriMesh& mesh)
-{
-    const int faceCount = mesh.faceCount();
-    // Sorting (edge key, half-edge) gives a deterministic edge numbering without a hash map.
-    std::vector<std::pair<std::uint64_t, int>> keys;
-    keys.reserve(3 * static_cast<size_t>(faceCount));
-    for (int f = 0; f < faceCount; ++f) {
-        const Face& t = mesh.faces[f];
-        if (repeatsVertex(t)) continue;
-        for (int k = 0; k < 3; ++k) {
-            const auto [lo, hi] = std::minmax(t[k], t[(k + 1) % 3]);
-            keys.emplace_back((static_cast<std::uint64_t>(lo) << 32) | static_cast<std::uint32_t>(hi), 3 * f + k);
-        }
-    }
-    std::sort(keys.begin(), keys.end());
-
-    EdgeTable table;
-    table.cornerEdge.assign(3 * static_cast<size_t>(faceCount), -1);
-    table.edgeHalfEdges.reserve(keys.size());
-    for (size_t i = 0; i < keys.size(); ++i) {
-        if (i == 0 || keys[i].first != keys[i - 1].first) {
-            table.edgeFirst.push_back(static_cast<int>(i));
-            table.ends.push_back({static_cast<int>(keys[i].first >> 32), static_cast<int>(keys[i].first & 0xffffffffu)});
-        }
-        table.edgeHalfEdges.push_back(keys[i].second);
-        table.cornerEdge[keys[i].second] = table.edgeCount() - 1;
-    }
-    table.edgeFirst.push_back(static_cast<int>(keys.size()));
-    return table;
-}
-
 //! Per vertex, the half-edges leaving it (corners of its faces), in CSR form.
 struct VertexCorners {
     std::vector<int> first;    //!< size vertices + 1
@@ -125,9 +83,6 @@ VertexCorners buildVertexCorners(const TriMesh& mesh)
             for (int k = 0; k < 3; ++k) vc.corners[fill[mesh.faces[f][k]]++] = 3 * f + k;
     return vc;
 }
-
-//! Half-edge origin.
-inline int halfEdgeFrom(const TriMesh& mesh, int h) { return mesh.faces[h / 3][h % 3]; }
 
 //! Uniform double in [0, 1) from the top 53 bits; std::uniform_real_distribution is
 //! implementation-defined, which would make the samples differ between standard libraries.
@@ -240,7 +195,7 @@ TopologySummary computeTopology(const TriMesh& mesh)
         for (int v : f) referenced[v] = 1;
     topo.vertices = static_cast<int>(std::count(referenced.begin(), referenced.end(), 1));
 
-    const EdgeTable edges = buildEdges(mesh);
+    const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
     const int edgeCount = edges.edgeCount();
     topo.edges = edgeCount;
 
@@ -249,12 +204,11 @@ TopologySummary computeTopology(const TriMesh& mesh)
     faceSets.reset(faceCount);
     for (int e = 0; e < edgeCount; ++e) {
         const int n = edges.faceCount(e);
-        const int* he = edges.edgeHalfEdges.data() + edges.edgeFirst[e];
         if (n > 2) ++topo.nonManifoldEdges;
         // Consistent orientation: the two faces of a manifold edge traverse it in opposite
         // directions.
-        if (n == 2 && halfEdgeFrom(mesh, he[0]) == halfEdgeFrom(mesh, he[1])) topo.orientable = false;
-        for (int i = 1; i < n; ++i) faceSets.unite(he[0] / 3, he[i] / 3);
+        if (n == 2 && edges.firstTwoSameDirection(mesh.faces, e)) topo.orientable = false;
+        for (int i = 1; i < n; ++i) faceSets.unite(edges.face(e, 0), edges.face(e, i));
     }
     std::vector<int> component(faceCount, -1);
     int componentCount = 0;
@@ -287,8 +241,8 @@ TopologySummary computeTopology(const TriMesh& mesh)
         for (int i = 0; i < k; ++i) {
             const int h = vertexCorners.corners[begin + i];
             const int f = h / 3, c = h % 3;
-            edgeFace.emplace_back(edges.cornerEdge[3 * f + c], i);            // v -> next
-            edgeFace.emplace_back(edges.cornerEdge[3 * f + (c + 2) % 3], i);  // previous -> v
+            edgeFace.emplace_back(edges.edgeOf(f, c), i);            // v -> next
+            edgeFace.emplace_back(edges.edgeOf(f, (c + 2) % 3), i);  // previous -> v
         }
         std::sort(edgeFace.begin(), edgeFace.end());
         fanSets.reset(k);
@@ -300,7 +254,7 @@ TopologySummary computeTopology(const TriMesh& mesh)
 
         boundaryFan.clear();
         for (const auto& [e, local] : edgeFace)
-            if (edges.faceCount(e) == 1) boundaryFan.emplace_back(fanSets.find(local), e);
+            if (edges.isBorder(e)) boundaryFan.emplace_back(fanSets.find(local), e);
         std::sort(boundaryFan.begin(), boundaryFan.end());
         for (size_t i = 0; i + 1 < boundaryFan.size();) {
             if (boundaryFan[i].first == boundaryFan[i + 1].first) {
@@ -325,9 +279,9 @@ TopologySummary computeTopology(const TriMesh& mesh)
     for (int f = 0; f < faceCount; ++f)
         if (component[f] >= 0) ++componentFaces[component[f]];
     for (int e = 0; e < edgeCount; ++e) {
-        const int c = component[edges.edgeHalfEdges[edges.edgeFirst[e]] / 3];
+        const int c = component[edges.face(e, 0)];
         ++componentEdges[c];
-        if (edges.faceCount(e) == 1 && boundarySets.find(e) == e) {
+        if (edges.isBorder(e) && boundarySets.find(e) == e) {
             ++topo.boundaryLoops;
             ++componentLoops[c];
         }
@@ -401,14 +355,14 @@ QualityMetrics computeQuality(const TriMesh& mesh)
     q.pctGt90 = 100.0 * obtuseFaces / faceCount;
 
     // Valence = distinct neighbours through edges; interior = on no boundary edge (one face).
-    const EdgeTable edges = buildEdges(mesh);
+    const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
     std::vector<int> valence(mesh.vertexCount(), 0);
     std::vector<char> onBoundary(mesh.vertexCount(), 0);
     for (int e = 0; e < edges.edgeCount(); ++e) {
         const auto [a, b] = edges.ends[e];
         ++valence[a];
         ++valence[b];
-        if (edges.faceCount(e) == 1) onBoundary[a] = onBoundary[b] = 1;
+        if (edges.isBorder(e)) onBoundary[a] = onBoundary[b] = 1;
     }
     int interior = 0, regular = 0, border = 0, borderRegular = 0;
     for (int v = 0; v < mesh.vertexCount(); ++v) {

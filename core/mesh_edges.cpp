@@ -1,0 +1,80 @@
+#include "mesh_edges.h"
+
+#include "errors.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+namespace fieldcvt {
+
+int EdgeTable::find(int a, int b) const
+{
+    const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+    const auto it = std::lower_bound(ends.begin(), ends.end(), key);
+    return it != ends.end() && *it == key ? static_cast<int>(it - ends.begin()) : -1;
+}
+
+bool EdgeTable::firstTwoSameDirection(const std::vector<Face>& faces, int e) const
+{
+    return faceCount(e) >= 2 && halfEdgeOrigin(faces, halfEdge(e, 0)) == halfEdgeOrigin(faces, halfEdge(e, 1));
+}
+
+EdgeTable buildEdgeTable(const std::vector<Face>& faces, int vertexCount, RepeatedVertexFaces repeated)
+{
+    const int faceCount = static_cast<int>(faces.size());
+    auto used = [&](const Face& t) {
+        return repeated == RepeatedVertexFaces::Keep || (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+    };
+    // Counting sort of the half-edges by their smaller vertex (in half-edge order within a
+    // bucket), then each bucket sorted by (larger vertex, half-edge): edges come out in
+    // (smaller, larger) order and their half-edges in increasing order, without a global sort.
+    std::vector<int> bucketStart(static_cast<size_t>(vertexCount) + 1, 0);
+    for (int f = 0; f < faceCount; ++f) {
+        const Face& t = faces[f];
+        for (int v : t)
+            if (v < 0 || v >= vertexCount)
+                throw InvalidInputError("edge table: face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                                        ", the mesh has " + std::to_string(vertexCount) + " vertices");
+        if (!used(t)) continue;
+        for (int k = 0; k < 3; ++k) ++bucketStart[std::min(t[k], t[(k + 1) % 3]) + 1];
+    }
+    for (int v = 0; v < vertexCount; ++v) bucketStart[v + 1] += bucketStart[v];
+    // Entry = (larger vertex << 32) | half-edge: sorting the integers sorts by both.
+    std::vector<std::uint64_t> entries(bucketStart[vertexCount]);
+    {
+        std::vector<int> fill(bucketStart.begin(), bucketStart.end() - 1);
+        for (int f = 0; f < faceCount; ++f) {
+            const Face& t = faces[f];
+            if (!used(t)) continue;
+            for (int k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                entries[fill[std::min(a, b)]++] =
+                    (static_cast<std::uint64_t>(std::max(a, b)) << 32) | static_cast<std::uint32_t>(3 * f + k);
+            }
+        }
+    }
+
+    EdgeTable table;
+    table.halfEdgeEdge.assign(3 * static_cast<size_t>(faceCount), -1);
+    table.halfEdges.resize(entries.size());
+    table.ends.reserve(entries.size() / 2 + 1);  // about two half-edges an edge on a closed mesh
+    table.first.reserve(entries.size() / 2 + 2);
+    for (int lo = 0; lo < vertexCount; ++lo) {
+        const auto begin = entries.begin() + bucketStart[lo], end = entries.begin() + bucketStart[lo + 1];
+        std::sort(begin, end);
+        for (auto it = begin; it != end; ++it) {
+            const int hi = static_cast<int>(*it >> 32), h = static_cast<int>(*it & 0xffffffffu);
+            if (it == begin || (*(it - 1) >> 32) != (*it >> 32)) {
+                table.first.push_back(static_cast<int>(it - entries.begin()));
+                table.ends.push_back({lo, hi});
+            }
+            table.halfEdges[it - entries.begin()] = h;
+            table.halfEdgeEdge[h] = table.edgeCount() - 1;
+        }
+    }
+    table.first.push_back(static_cast<int>(entries.size()));
+    return table;
+}
+
+}  // namespace fieldcvt
