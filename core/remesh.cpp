@@ -51,6 +51,7 @@ void validate(const RemeshParams& p)
     if (!std::isfinite(p.gradation) || p.gradation < 0) throw InvalidInputError("gradation must be a finite number >= 0");
     if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0)
         throw InvalidInputError("valence optimisation step counts must be >= 0");
+    if (p.valence.borderWeight < 1) throw InvalidInputError("valence optimisation border weight must be >= 1");
 }
 
 // The user's feature edges, from input vertex indices to the cleaned surface's.

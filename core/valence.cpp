@@ -161,11 +161,14 @@ private:
     // --- queries ------------------------------------------------------------------------------
     void ring(int v, Ring& r) const;
     int target(int v) const { return onBorder_[v] ? 4 : 6; }
-    int valenceDelta(int v, int delta) const
+    int weight(int v) const { return onBorder_[v] ? params_.borderWeight : 1; }
+    //! Term of R for vertex v at valence `valence` (ValenceParams::borderWeight on the border).
+    int cost(int v, int valence) const
     {
-        const int before = valence_[v] - target(v), after = before + delta;
-        return after * after - before * before;
+        const int d = valence - target(v);
+        return weight(v) * d * d;
     }
+    int valenceDelta(int v, int delta) const { return cost(v, valence_[v] + delta) - cost(v, valence_[v]); }
     //! Faces containing both a and b.
     void edgeFaces(int a, int b, std::vector<int>& out) const;
     bool hasEdge(int a, int b) const;
@@ -641,9 +644,7 @@ bool ValenceOptimizer::evaluateCollapse(int a, int b, int& gain, int& keep, int&
     if (common != 2) return false;
     const int merged = valence_[a] + valence_[b] - 4;
     if (merged < 3 || valence_[c] - 1 < 3 || valence_[d] - 1 < 3) return false;
-    const int before = valence_[a] - target(a), beforeB = valence_[b] - target(b);
-    const int after = merged - target(keep);
-    gain = after * after - before * before - beforeB * beforeB + valenceDelta(c, -1) + valenceDelta(d, -1);
+    gain = cost(keep, merged) - cost(a, valence_[a]) - cost(b, valence_[b]) + valenceDelta(c, -1) + valenceDelta(d, -1);
     return true;
 }
 
@@ -1172,8 +1173,7 @@ long long ValenceOptimizer::irregularity() const
     long long sum = 0;
     for (int v = 0; v < static_cast<int>(pos_.size()); ++v) {
         if (!vertexAlive_[v] || vertexFaces_[v].empty()) continue;
-        const long long d = valence_[v] - target(v);
-        sum += d * d;
+        sum += cost(v, valence_[v]);
     }
     return sum;
 }

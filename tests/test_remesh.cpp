@@ -121,6 +121,9 @@ TEST(Remesh, RejectsOutOfRangeParameters)
     p = RemeshParams{};
     p.cvtIterations = -5;
     EXPECT_THROW(remesh(input, p), InvalidInputError);
+    p = RemeshParams{};
+    p.valence.borderWeight = 0;
+    EXPECT_THROW(remesh(input, p), InvalidInputError);
 }
 
 TEST(Remesh, ReportsProgressInOrderAndCanBeCancelled)
