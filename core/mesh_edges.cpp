@@ -20,6 +20,13 @@ bool EdgeTable::firstTwoSameDirection(const std::vector<Face>& faces, int e) con
     return faceCount(e) >= 2 && halfEdgeOrigin(faces, halfEdge(e, 0)) == halfEdgeOrigin(faces, halfEdge(e, 1));
 }
 
+int EdgeTable::firstHalfEdgeFrom(const std::vector<Face>& faces, int e, int origin) const
+{
+    for (int i = 0; i < faceCount(e); ++i)
+        if (halfEdgeOrigin(faces, halfEdge(e, i)) == origin) return halfEdge(e, i);
+    return -1;
+}
+
 EdgeTable buildEdgeTable(const std::vector<Face>& faces, int vertexCount, RepeatedVertexFaces repeated)
 {
     const int faceCount = static_cast<int>(faces.size());

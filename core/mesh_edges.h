@@ -45,6 +45,10 @@ struct EdgeTable {
     //! Whether the first two half-edges of e run the same way (an orientation conflict between
     //! its first two faces); false for an edge with fewer than two. `faces` as given to the build.
     bool firstTwoSameDirection(const std::vector<Face>& faces, int e) const;
+    //! The first (smallest) half-edge of e that starts at vertex `origin`, -1 if none: for a
+    //! half-edge from a to b, firstHalfEdgeFrom(faces, e, b) is its opposite (b, a) in a
+    //! neighbouring face, the first one if e has several. `faces` as given to the build.
+    int firstHalfEdgeFrom(const std::vector<Face>& faces, int e, int origin) const;
 };
 
 //! Origin vertex of half-edge h (= faces[h / 3][h % 3]).

@@ -1,15 +1,10 @@
 #include "rdt.h"
 
+#include "mesh_edges.h"
+
 #include <algorithm>
 
 namespace fieldcvt {
-
-namespace {
-
-// Directed edge key, for the orientation and manifold checks.
-long long edgeKey(int a, int b, int n) { return static_cast<long long>(a) * n + b; }
-
-}  // namespace
 
 int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex)
 {
@@ -23,19 +18,14 @@ int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex)
         return c;
     };
     // Directed half-edge (a, b) of face f: its corner at a is 3f+k, at b is 3f+(k+1)%3. The
-    // opposite half-edge (b, a) of the neighbouring face shares both endpoints.
-    std::vector<std::pair<long long, int>> halfEdges;
-    halfEdges.reserve(cornerCount);
-    const long long n = mesh.vertexCount();
-    for (int f = 0; f < mesh.faceCount(); ++f)
-        for (int k = 0; k < 3; ++k) halfEdges.push_back({mesh.faces[f][k] * n + mesh.faces[f][(k + 1) % 3], 3 * f + k});
-    std::sort(halfEdges.begin(), halfEdges.end());
+    // opposite half-edge (b, a) of the neighbouring face (the first one, for a non-manifold
+    // edge) shares both endpoints.
+    const EdgeTable edges = buildEdgeTable(mesh);
     for (int f = 0; f < mesh.faceCount(); ++f)
         for (int k = 0; k < 3; ++k) {
-            const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
-            const auto it = std::lower_bound(halfEdges.begin(), halfEdges.end(), std::make_pair(b * n + a, -1));
-            if (it == halfEdges.end() || it->first != b * n + a) continue;
-            const int g = it->second / 3, kb = it->second % 3;  // (b, a) in face g, corner of b is kb
+            const int h = edges.firstHalfEdgeFrom(mesh.faces, edges.edgeOf(f, k), mesh.faces[f][(k + 1) % 3]);
+            if (h < 0) continue;
+            const int g = h / 3, kb = h % 3;  // (b, a) in face g, corner of b is kb
             auto unite = [&](int x, int y) { parent[find(x)] = find(y); };
             unite(3 * f + k, 3 * g + (kb + 1) % 3);  // corners at a
             unite(3 * f + (k + 1) % 3, 3 * g + kb);  // corners at b
@@ -80,11 +70,7 @@ int removeLensPieces(int n, std::vector<std::array<int, 3>>& faces)
     std::vector<int> degree(n, 0);
     for (const auto& t : faces)
         for (int v : t) ++degree[v];
-    std::vector<long long> undirected;
-    undirected.reserve(faces.size() * 3);
-    for (const auto& t : faces)
-        for (int k = 0; k < 3; ++k) undirected.push_back(edgeKey(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]), n));
-    std::sort(undirected.begin(), undirected.end());
+    const EdgeTable edges = buildEdgeTable(faces, n);
     // Faces at the candidates of degree 2, as (vertex, face index): the two of a vertex adjacent.
     std::vector<std::pair<int, int>> star;
     for (int f = 0; f < static_cast<int>(faces.size()); ++f)
@@ -104,9 +90,7 @@ int removeLensPieces(int n, std::vector<std::array<int, 3>>& faces)
         };
         const std::array<int, 3> tf = rotated(f), tg = rotated(g);
         if (tf[1] != tg[2] || tf[2] != tg[1]) continue;
-        const long long key = edgeKey(std::min(tf[1], tf[2]), std::max(tf[1], tf[2]), n);
-        const auto range = std::equal_range(undirected.begin(), undirected.end(), key);
-        if (range.second - range.first <= 2) continue;  // nothing else on (a, b): keep the pillow
+        if (edges.faceCount(edges.find(tf[1], tf[2])) <= 2) continue;  // nothing else on (a, b): keep the pillow
         removed[f] = removed[g] = 1;
         ++lenses;
     }
@@ -126,8 +110,8 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
 {
     RdtResult result;
 
-    // Count faces per undirected edge and per directed edge. An edge is kept manifold when it
-    // has at most two faces and they traverse it in opposite directions.
+    // An edge is kept manifold when it has at most two faces and they traverse it in opposite
+    // directions.
     std::vector<std::array<int, 3>> faces;
     faces.reserve(triangles.size());
     for (const auto& t : triangles)
@@ -135,30 +119,18 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
     result.lensPieces = removeLensPieces(n, faces);
 
     for (int pass = 0; pass < 8; ++pass) {
-        std::vector<long long> undirected, directed;
-        undirected.reserve(faces.size() * 3);
-        directed.reserve(faces.size() * 3);
-        for (const auto& t : faces)
-            for (int k = 0; k < 3; ++k) {
-                const int a = t[k], b = t[(k + 1) % 3];
-                undirected.push_back(edgeKey(std::min(a, b), std::max(a, b), n));
-                directed.push_back(edgeKey(a, b, n));
-            }
-        std::sort(undirected.begin(), undirected.end());
-        std::sort(directed.begin(), directed.end());
-        auto count = [](const std::vector<long long>& keys, long long key) {
-            auto range = std::equal_range(keys.begin(), keys.end(), key);
-            return static_cast<int>(range.second - range.first);
-        };
+        // No face repeats a vertex, so a face lies on each of its edges once, and an edge with
+        // two faces has a directed side twice exactly when its two half-edges run the same way.
+        const EdgeTable edges = buildEdgeTable(faces, n);
         std::vector<std::array<int, 3>> kept;
         kept.reserve(faces.size());
-        for (const auto& t : faces) {
+        for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
             bool bad = false;
             for (int k = 0; k < 3 && !bad; ++k) {
-                const int a = t[k], b = t[(k + 1) % 3];
-                bad = count(undirected, edgeKey(std::min(a, b), std::max(a, b), n)) > 2 || count(directed, edgeKey(a, b, n)) > 1;
+                const int e = edges.edgeOf(f, k);
+                bad = edges.isNonManifold(e) || edges.firstTwoSameDirection(faces, e);
             }
-            if (!bad) kept.push_back(t);
+            if (!bad) kept.push_back(faces[f]);
         }
         if (kept.size() == faces.size()) break;
         result.removedFaces += static_cast<int>(faces.size() - kept.size());

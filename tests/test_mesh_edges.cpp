@@ -165,6 +165,27 @@ TEST(MeshEdges, FacesRepeatingAVertexAreKeptOrSkipped)
     for (int k = 0; k < 3; ++k) EXPECT_EQ(skipped.edgeOf(1, k), -1);
 }
 
+TEST(MeshEdges, FirstHalfEdgeFromAVertex)
+{
+    // Edge {0, 1} in four faces: 0->1 (face 0), 1->0 (face 1), 0->1 (face 2), 1->0 (face 3).
+    const TriMesh m = meshOf(6, {{0, 1, 2}, {1, 0, 3}, {4, 0, 1}, {5, 1, 0}});
+    const EdgeTable t = buildEdgeTable(m);
+    const int e = t.find(0, 1);
+    EXPECT_EQ(t.firstHalfEdgeFrom(m.faces, e, 0), 0);   // face 0, corner 0
+    EXPECT_EQ(t.firstHalfEdgeFrom(m.faces, e, 1), 3);   // face 1, corner 0
+    EXPECT_EQ(t.firstHalfEdgeFrom(m.faces, e, 4), -1);  // not an end of e
+    // A border edge has no opposite half-edge.
+    const int border = t.find(1, 2);
+    EXPECT_EQ(t.firstHalfEdgeFrom(m.faces, border, 1), 1);
+    EXPECT_EQ(t.firstHalfEdgeFrom(m.faces, border, 2), -1);
+    // The opposite of a half-edge from a to b is the first half-edge from b on its edge.
+    for (int f = 0; f < m.faceCount(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int h = t.firstHalfEdgeFrom(m.faces, t.edgeOf(f, k), m.faces[f][(k + 1) % 3]);
+            if (h >= 0) EXPECT_EQ(m.faces[h / 3][(h % 3 + 1) % 3], m.faces[f][k]);
+        }
+}
+
 TEST(MeshEdges, EmptyMeshAndOutOfRangeIndex)
 {
     const EdgeTable empty = buildEdgeTable(TriMesh{});
