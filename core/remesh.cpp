@@ -306,7 +306,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         pipeline.run("valence", [&] {
             stage = "valence";
             pipeline.report(stage, 92);
-            const ValenceSurface on{surface, tree, border, features.segments, useField ? &field : nullptr};
+            const ValenceSurface on{surface, tree, features.segments, useField ? &field : nullptr};
             result.valence = optimizeValence(result.mesh, roles, on, params.valence);
         });
     }

@@ -16,7 +16,7 @@ namespace fieldcvt {
 //! What a vertex of the mesh being optimised may do.
 enum class VertexRole : char {
     Free,      //!< interior vertex: moves tangentially, projected on the input surface
-    Boundary,  //!< on the input's open border: moves only along it; target valence 4
+    Boundary,  //!< on the input's open border: stays where it is (see optimizeValence); target valence 4
     Feature,   //!< on a sharp feature line: moves only along it
     Corner,    //!< fixed (feature corner, end of a feature curve)
 };
@@ -72,17 +72,17 @@ struct ValenceStats {
 struct ValenceSurface {
     const TriMesh& input;                //!< the input surface
     const ClosestPointTree& tree;        //!< closest points on `input`
-    std::vector<Segment> border;         //!< the input's open boundary (Boundary vertices stay on it)
     std::vector<Segment> features;       //!< sharp feature lines (Feature vertices stay on them)
     const DirectionField* field = nullptr;  //!< 6-RoSy field on `input` for the final relaxation (null: none)
 };
 
 //! Optimises `mesh` in place: vertices may be added and removed; the mesh stays edge- and
 //! vertex-manifold and oriented, its vertices on the input surface. `roles` has one entry per
-//! vertex of `mesh` (or is empty: then derived, Boundary on the mesh's border, Corner where the
-//! border turns by more than 45°, Free elsewhere) and is kept in step with the vertices (a split
-//! vertex is Free, a collapse keeps the constrained end). A Free vertex on an edge of the mesh's
-//! border is treated, and returned, as Boundary. Border edges are never flipped or collapsed,
+//! vertex of `mesh` (or is empty: then derived, Boundary on the mesh's border, Free elsewhere)
+//! and is kept in step with the vertices (a split vertex is Free, a collapse keeps the
+//! constrained end). A Free vertex on an edge of the mesh's border is treated, and returned, as
+//! Boundary. Boundary and Corner vertices do not move; Feature vertices slide along
+//! `surface.features`, Free ones on the input surface. Border edges are never flipped or collapsed,
 //! nor edges between two Feature / Corner vertices; only Free vertices are split, and a
 //! collapse needs a Free end. V6% before and after are measured like computeQuality does.
 //! Deterministic, whatever the thread count. Throws InvalidInputError on a size mismatch.

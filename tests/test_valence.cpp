@@ -156,7 +156,7 @@ TEST(Valence, PlantedFlipsInARegularTorusAreUndone)
     ASSERT_EQ(irregularity(mesh), 6 * 4);
 
     ClosestPointTree tree(torus);
-    const ValenceSurface surface{torus, tree, {}, {}, nullptr};
+    const ValenceSurface surface{torus, tree, {}, nullptr};
     std::vector<VertexRole> roles;
     const ValenceStats stats = optimizeValence(mesh, roles, surface, ValenceParams{});
 
@@ -184,7 +184,7 @@ TEST(Valence, RemeshedTorusStaysManifoldOrientedOnTheSurfaceAndGetsMoreRegular)
     const TopologySummary topoBefore = computeTopology(mesh);
 
     ClosestPointTree tree(input);
-    const ValenceSurface surface{input, tree, boundarySegments(input), {}, nullptr};
+    const ValenceSurface surface{input, tree, {}, nullptr};
     std::vector<VertexRole> roles(mesh.vertices.size(), VertexRole::Free);
     const ValenceStats stats = optimizeValence(mesh, roles, surface, ValenceParams{});
     const QualityMetrics after = computeQuality(mesh);
@@ -216,7 +216,7 @@ TEST(Valence, DeeperLookAheadRemovesTheDislocationsAShallowOneLeaves)
     const TriMesh input = readMesh(testmesh::resource("torus.obj"));
     const TriMesh start = remeshedWithoutValence(input, 800);
     ClosestPointTree tree(input);
-    const ValenceSurface surface{input, tree, boundarySegments(input), {}, nullptr};
+    const ValenceSurface surface{input, tree, {}, nullptr};
     auto run = [&](int depth) {
         TriMesh mesh = start;
         std::vector<VertexRole> roles;
@@ -241,7 +241,7 @@ TEST(Valence, BorderWeightMovesTheDisksValenceDeficitInside)
     const TriMesh input = readMesh(testmesh::resource("camelhead.off"));
     const TriMesh start = remeshedWithoutValence(input, 1500);
     ClosestPointTree tree(input);
-    const ValenceSurface surface{input, tree, boundarySegments(input), {}, nullptr};
+    const ValenceSurface surface{input, tree, {}, nullptr};
     auto run = [&](int weight) {
         TriMesh mesh = start;
         std::vector<VertexRole> roles;
@@ -306,7 +306,7 @@ TEST(Valence, OpenCylinderKeepsItsBorder)
     const size_t borderCount = borderVertices(mesh).size();
 
     ClosestPointTree tree(input);
-    const ValenceSurface surface{input, tree, border, {}, nullptr};
+    const ValenceSurface surface{input, tree, {}, nullptr};
     std::vector<VertexRole> roles;  // derived: border vertices become Boundary
     const ValenceStats stats = optimizeValence(mesh, roles, surface, ValenceParams{});
 
@@ -346,7 +346,7 @@ TEST(Valence, FeatureLinesAndCornersAreKept)
     const Vec3 corner0 = mesh.vertices[row * 13], corner1 = mesh.vertices[row * 13 + 12];
 
     ClosestPointTree tree(plane);
-    const ValenceSurface surface{plane, tree, boundarySegments(plane), features, nullptr};
+    const ValenceSurface surface{plane, tree, features, nullptr};
     ValenceParams params;
     const ValenceStats stats = optimizeValence(mesh, roles, surface, params);
     EXPECT_LT(stats.irregularityAfter, stats.irregularityBefore);
@@ -376,7 +376,7 @@ TEST(Valence, DeterministicWhateverTheThreadCount)
     // A field makes the final relaxation use it too.
     FieldParams fieldParams;
     const DirectionField field = computeField(input, fieldParams);
-    const ValenceSurface surface{input, tree, {}, {}, &field};
+    const ValenceSurface surface{input, tree, {}, &field};
 
     auto run = [&](int threads) {
         const int previous = omp_get_max_threads();
@@ -399,7 +399,7 @@ TEST(Valence, RejectsMismatchedRoles)
     const TriMesh plane = hexPlane(4, 4);
     TriMesh mesh = plane;
     ClosestPointTree tree(plane);
-    const ValenceSurface surface{plane, tree, {}, {}, nullptr};
+    const ValenceSurface surface{plane, tree, {}, nullptr};
     std::vector<VertexRole> roles(3, VertexRole::Free);
     EXPECT_THROW(optimizeValence(mesh, roles, surface, ValenceParams{}), InvalidInputError);
 }
