@@ -135,6 +135,18 @@ TriMesh remeshedWithoutValence(const TriMesh& input, int vertices)
     return remesh(input, p).mesh;
 }
 
+//! `start` optimised with `params` (without roles: derived), checked to stay manifold.
+TriMesh optimizedCopy(const TriMesh& start, const ValenceSurface& surface, const ValenceParams& params,
+                      ValenceStats* stats = nullptr)
+{
+    TriMesh mesh = start;
+    std::vector<VertexRole> roles;
+    const ValenceStats s = optimizeValence(mesh, roles, surface, params);
+    EXPECT_TRUE(computeTopology(mesh).manifold());
+    if (stats) *stats = s;
+    return mesh;
+}
+
 }  // namespace
 
 TEST(Valence, PlantedFlipsInARegularTorusAreUndone)
@@ -218,13 +230,11 @@ TEST(Valence, DeeperLookAheadRemovesTheDislocationsAShallowOneLeaves)
     ClosestPointTree tree(input);
     const ValenceSurface surface{input, tree, {}, nullptr};
     auto run = [&](int depth) {
-        TriMesh mesh = start;
-        std::vector<VertexRole> roles;
         ValenceParams params;
         params.lookAheadDepth = depth;
         params.relaxIterations = 0;
-        const ValenceStats stats = optimizeValence(mesh, roles, surface, params);
-        EXPECT_TRUE(computeTopology(mesh).manifold());
+        ValenceStats stats;
+        optimizedCopy(start, surface, params, &stats);
         return stats;
     };
     const ValenceStats shallow = run(2), deep = run(5);
@@ -243,13 +253,9 @@ TEST(Valence, BorderWeightMovesTheDisksValenceDeficitInside)
     ClosestPointTree tree(input);
     const ValenceSurface surface{input, tree, {}, nullptr};
     auto run = [&](int weight) {
-        TriMesh mesh = start;
-        std::vector<VertexRole> roles;
         ValenceParams params;
         params.borderWeight = weight;
-        optimizeValence(mesh, roles, surface, params);
-        EXPECT_TRUE(computeTopology(mesh).manifold());
-        return computeQuality(mesh);
+        return computeQuality(optimizedCopy(start, surface, params));
     };
     const QualityMetrics flat = run(1), weighted = run(4);
     EXPECT_GT(weighted.boundaryV4Pct, flat.boundaryV4Pct + 5.0);
