@@ -57,6 +57,20 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
     }
 }
 
+int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed,
+                     const std::vector<char>& frozen)
+{
+    const RvdResult& rvd = energy.diagram(seeds, RvdOptions{});
+    std::mt19937_64 rng(seed ^ 0xd1b54a32d192ed03ULL);
+    int moved = 0;
+    for (size_t i = 0; i < seeds.size(); ++i) {
+        if (rvd.mass[i] > 0 || (i < frozen.size() && frozen[i])) continue;
+        seeds[i] = sampleSurface(surface, 1, rng(), energy.faceDensity())[0];
+        ++moved;
+    }
+    return moved;
+}
+
 namespace {
 
 // Wraps the energy for LBFGS++ and remembers the best point evaluated.

@@ -35,6 +35,12 @@ struct OptimizeStats {
 void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations,
                      std::uint64_t seed);
 
+//! Seeds whose restricted cell is empty (no mass) go to random points of the surface (∝ area ×
+//! density, deterministic from `seed`); frozen ones (`frozen[i]` != 0) stay. L-BFGS cannot move
+//! such a seed (its gradient is zero) and the RDT would drop it. Returns how many moved.
+int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed,
+                     const std::vector<char>& frozen = {});
+
 //! L-BFGS on the energy, starting from and updating `seeds`. The best point seen is kept: a
 //! line-search failure restarts from it; a second failure without progress ends early.
 OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, const LbfgsParams& params);

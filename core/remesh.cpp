@@ -253,6 +253,17 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         OptimizeStats stats = minimizeLbfgs(energy, seeds, LbfgsParams{iterations});
         result.warnings.insert(result.warnings.end(), stats.warnings.begin(), stats.warnings.end());
     };
+    // A seed whose cell emptied during L-BFGS (a neighbour passed over it) has no gradient and
+    // would be lost in the RDT (nef2 at 100 000 vertices: 7): it starts again elsewhere.
+    int reseedCalls = 0, reseededSamples = 0;
+    auto reseedEmpty = [&] {
+        std::vector<char> frozen(seeds.size(), 0);
+        for (size_t i = 0; i < sampleRoles.size() && i < seeds.size(); ++i)
+            frozen[i] = sampleRoles[i] != SampleConstraint::Free;
+        const int moved = reseedEmptyCells(energy, surface, seeds, params.seed + 7919u * ++reseedCalls, frozen);
+        reseededSamples += moved;
+        return moved;
+    };
     try {
         pipeline.run("lloyd", [&] {
             stage = "lloyd";
@@ -262,6 +273,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             stage = "cvt";
             best = std::numeric_limits<double>::infinity();
             lbfgs(params.cvtIterations);
+            if (params.cvtIterations > 0) reseedEmpty();
         });
         // Second stage of §5: samples on the border and on feature lines, held there from now on.
         pipeline.run("features", [&] {
@@ -277,6 +289,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                 best = std::numeric_limits<double>::infinity();
                 energy.setField(useField ? &field : nullptr, &tree, params.lambda);
                 lbfgs(params.fcvtIterations);
+                if (reseedEmpty() > 0) lbfgs(std::min(10, params.fcvtIterations));  // to find their place
             });
         }
     } catch (const TimeLimitReached&) {
@@ -285,6 +298,9 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                 << ": the output is made from the best samples so far";
         result.warnings.push_back(message.str());
     }
+    if (reseededSamples > 0)
+        result.warnings.push_back(std::to_string(reseededSamples) +
+                                  " samples whose cells had emptied during the optimisation were re-seeded");
 
     std::vector<VertexRole> roles;  // per output vertex, for the valence optimisation
     pipeline.run("rdt", [&] {

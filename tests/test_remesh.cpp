@@ -236,3 +236,28 @@ TEST(Remesh, RejectsBadInitialSamples)
     params.initialSamples.push_back(Vec3(std::nan(""), 0, 0));
     EXPECT_THROW(remesh(testmesh::icosphere(2), params), InvalidInputError);
 }
+
+// A sample whose restricted cell is empty has no gradient: L-BFGS leaves it where it is and the
+// RDT would drop it (at scale, cells empty when a neighbour passes over them). Here one sample
+// starts far off the sphere, so its cell is empty from the start, and there is no Lloyd
+// warm-up to rescue it: after the CVT stage it is re-seeded and every sample ends as a vertex.
+TEST(Remesh, SampleWithAnEmptyCellIsReseeded)
+{
+    const TriMesh sphere = testmesh::icosphere(3);
+    std::vector<Vec3> samples = sampleSurfaceUniform(sphere, 200, 3);
+    samples.push_back(Vec3(5, 0, 0));
+    RemeshParams params;
+    params.vertexCount = static_cast<int>(samples.size());
+    params.initialSamples = samples;
+    params.lloydIterations = 0;
+    params.cvtIterations = 20;
+    params.fcvtIterations = 20;
+    params.valenceOptimization = false;
+    params.computeDistances = false;
+    const RemeshResult r = remesh(sphere, params);
+    EXPECT_EQ(r.mesh.vertexCount(), static_cast<int>(samples.size()));
+    bool reported = false;
+    for (const std::string& w : r.warnings) reported = reported || w.find("re-seeded") != std::string::npos;
+    EXPECT_TRUE(reported);
+    EXPECT_TRUE(computeTopology(r.mesh).manifold());
+}
