@@ -60,6 +60,7 @@ public:
 
     //! Samples whose gradient is set to zero (e.g. samples held on the open border).
     void setFrozen(std::vector<char> frozen) { frozen_ = std::move(frozen); }
+    const std::vector<char>& frozen() const { return frozen_; }
 
     //! E at `x` (flattened seeds); writes ∂E/∂x into `gradient` (resized).
     EnergyValue evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& gradient);

@@ -18,6 +18,16 @@ namespace {
 constexpr double kTinyCellFraction = 1.0 / 16;
 // ... when more than this fraction of all cells are that small.
 constexpr double kUnevenFraction = 0.01;
+
+// Moves the seeds listed in `indices` to random points of the surface, ∝ area × μ (density.h),
+// all drawn in one pass over the faces.
+void moveToRandomPoints(const EnergyFunction& energy, const TriMesh& surface, const std::vector<int>& indices,
+                        std::uint64_t seed, std::vector<Vec3>& seeds)
+{
+    if (indices.empty()) return;
+    const std::vector<Vec3> points = sampleSurface(surface, static_cast<int>(indices.size()), seed, energy.faceDensity());
+    for (size_t k = 0; k < indices.size(); ++k) seeds[size_t(indices[k])] = points[k];
+}
 }  // namespace
 
 void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations,
@@ -25,6 +35,7 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
 {
     Eigen::VectorXd x, gradient;
     std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+    std::vector<int> reseed;
     // With a density a cell's mass varies like μ at the optimum (area ~ 1/μ, mass ~ ρ·area = μ):
     // the tiny-cell test allows for the density's range, so graded cells are not taken for a
     // cluster.
@@ -48,27 +59,26 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
         const double tiny = kTinyCellFraction * totalMass / double(seeds.size()) / densityRange;
         const auto tinyCells = std::count_if(rvd.mass.begin(), rvd.mass.end(), [&](double m) { return m <= tiny; });
         const bool uneven = double(tinyCells) > kUnevenFraction * double(seeds.size());
+        reseed.clear();
         for (size_t i = 0; i < seeds.size(); ++i) {
             if (rvd.mass[i] > (uneven ? tiny : 0.0))
                 seeds[i] = rvd.moment[i] / rvd.mass[i];
             else
-                seeds[i] = sampleSurface(surface, 1, rng(), energy.faceDensity())[0];  // ∝ area × μ (density.h)
+                reseed.push_back(static_cast<int>(i));
         }
+        if (!reseed.empty()) moveToRandomPoints(energy, surface, reseed, rng(), seeds);
     }
 }
 
-int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed,
-                     const std::vector<char>& frozen)
+int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed)
 {
     const RvdResult& rvd = energy.diagram(seeds, RvdOptions{});
-    std::mt19937_64 rng(seed ^ 0xd1b54a32d192ed03ULL);
-    int moved = 0;
-    for (size_t i = 0; i < seeds.size(); ++i) {
-        if (rvd.mass[i] > 0 || (i < frozen.size() && frozen[i])) continue;
-        seeds[i] = sampleSurface(surface, 1, rng(), energy.faceDensity())[0];
-        ++moved;
-    }
-    return moved;
+    const std::vector<char>& frozen = energy.frozen();
+    std::vector<int> empty;
+    for (size_t i = 0; i < seeds.size(); ++i)
+        if (!(rvd.mass[i] > 0) && !(i < frozen.size() && frozen[i])) empty.push_back(static_cast<int>(i));
+    moveToRandomPoints(energy, surface, empty, seed, seeds);
+    return static_cast<int>(empty.size());
 }
 
 namespace {

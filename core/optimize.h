@@ -36,10 +36,10 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
                      std::uint64_t seed);
 
 //! Seeds whose restricted cell is empty (no mass) go to random points of the surface (∝ area ×
-//! density, deterministic from `seed`); frozen ones (`frozen[i]` != 0) stay. L-BFGS cannot move
-//! such a seed (its gradient is zero) and the RDT would drop it. Returns how many moved.
-int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed,
-                     const std::vector<char>& frozen = {});
+//! density, deterministic from `seed`); the energy's frozen ones (EnergyFunction::frozen) stay.
+//! L-BFGS cannot move such a seed (its gradient is zero) and the RDT would drop it. Returns how
+//! many moved.
+int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed);
 
 //! L-BFGS on the energy, starting from and updating `seeds`. The best point seen is kept: a
 //! line-search failure restarts from it; a second failure without progress ends early.

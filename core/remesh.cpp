@@ -257,10 +257,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     // would be lost in the RDT (nef2 at 100 000 vertices: 7): it starts again elsewhere.
     int reseedCalls = 0, reseededSamples = 0;
     auto reseedEmpty = [&] {
-        std::vector<char> frozen(seeds.size(), 0);
-        for (size_t i = 0; i < sampleRoles.size() && i < seeds.size(); ++i)
-            frozen[i] = sampleRoles[i] != SampleConstraint::Free;
-        const int moved = reseedEmptyCells(energy, surface, seeds, params.seed + 7919u * ++reseedCalls, frozen);
+        const int moved = reseedEmptyCells(energy, surface, seeds, params.seed + 7919u * ++reseedCalls);
         reseededSamples += moved;
         return moved;
     };
