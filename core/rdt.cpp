@@ -64,13 +64,13 @@ namespace {
 // (j and l are also neighbours outside the lens), so the edge check below would remove all
 // of them and leave a hole. Dropping the pillow instead (the lens area counts as j's and l's)
 // keeps the regular faces of (j, l). Only done when (j, l) has other faces, so a surface that
-// is nothing but a pillow (three samples) keeps it. Returns the number of lenses removed.
-int removeLensPieces(int n, std::vector<std::array<int, 3>>& faces)
+// is nothing but a pillow (three samples) keeps it. `edges` is the edge table of `faces`.
+// Returns the number of lenses removed.
+int removeLensPieces(int n, const EdgeTable& edges, std::vector<std::array<int, 3>>& faces)
 {
     std::vector<int> degree(n, 0);
     for (const auto& t : faces)
         for (int v : t) ++degree[v];
-    const EdgeTable edges = buildEdgeTable(faces, n);
     // Faces at the candidates of degree 2, as (vertex, face index): the two of a vertex adjacent.
     std::vector<std::pair<int, int>> star;
     for (int f = 0; f < static_cast<int>(faces.size()); ++f)
@@ -116,12 +116,14 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
     faces.reserve(triangles.size());
     for (const auto& t : triangles)
         if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) faces.push_back(t);
-    result.lensPieces = removeLensPieces(n, faces);
+    EdgeTable edges = buildEdgeTable(faces, n);
+    result.lensPieces = removeLensPieces(n, edges, faces);
+    if (result.lensPieces > 0) edges = buildEdgeTable(faces, n);
 
     for (int pass = 0; pass < 8; ++pass) {
         // No face repeats a vertex, so a face lies on each of its edges once, and an edge with
         // two faces has a directed side twice exactly when its two half-edges run the same way.
-        const EdgeTable edges = buildEdgeTable(faces, n);
+        if (pass > 0) edges = buildEdgeTable(faces, n);
         std::vector<std::array<int, 3>> kept;
         kept.reserve(faces.size());
         for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
