@@ -3,6 +3,7 @@
 #include "curvature.h"
 #include "errors.h"
 #include "field.h"  // vertexNormals
+#include "mesh_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,22 +28,19 @@ std::vector<double> curvatureDensity(const TriMesh& surface, double gradation, d
 
     // Graded sizing: Laplacian steps (μ ← ½ μ + ½ mean of the neighbours) until the diffusion
     // radius, about ℓ·sqrt(steps / 2) for input edges of mean length ℓ, reaches one target edge.
+    // Neighbour lists come out sorted: the table's edges are in (smaller, larger) order.
+    const EdgeTable edges = buildEdgeTable(surface);
     std::vector<std::vector<int>> neighbours(n);
-    double lengthSum = 0;
-    long long edgeCount = 0;
-    for (const Face& f : surface.faces)
-        for (int e = 0; e < 3; ++e) {
-            const int a = f[e], b = f[(e + 1) % 3];
-            neighbours[a].push_back(b);
-            neighbours[b].push_back(a);
-            lengthSum += (surface.vertices[a] - surface.vertices[b]).norm();
-            ++edgeCount;
-        }
-    for (std::vector<int>& list : neighbours) {
-        std::sort(list.begin(), list.end());
-        list.erase(std::unique(list.begin(), list.end()), list.end());
+    double lengthSum = 0;  // over the faces' sides, as the mean input edge a face sees
+    long long sideCount = 0;
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        const auto [a, b] = edges.ends[e];
+        neighbours[a].push_back(b);
+        neighbours[b].push_back(a);
+        lengthSum += edges.faceCount(e) * (surface.vertices[a] - surface.vertices[b]).norm();
+        sideCount += edges.faceCount(e);
     }
-    const double meanEdge = edgeCount > 0 ? lengthSum / double(edgeCount) : edgeLength;
+    const double meanEdge = sideCount > 0 ? lengthSum / double(sideCount) : edgeLength;
     const double ratio = meanEdge > 0 ? edgeLength / meanEdge : 1.0;
     const int steps = static_cast<int>(std::clamp(std::round(2 * ratio * ratio), 3.0, 50.0));
     std::vector<double> next(n);
