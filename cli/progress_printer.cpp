@@ -21,8 +21,8 @@ void ProgressPrinter::report(const std::string& stage, double percent)
 {
     std::lock_guard<std::mutex> lock(mutex_);
     percent = percent < 0 ? 0 : percent > 100 ? 100 : percent;
-    // "cvt 12/65": the first word names the stage; plain lines only start anew with it.
-    const std::string key = stage.substr(0, stage.find(' '));
+    // Plain lines only start anew with the stage, not with its steps ("cvt 12/65").
+    const std::string key = stageName(stage);
     const bool newStage = key != stage_;
     if (terminal_) {
         const int tenths = static_cast<int>(percent * 10);

@@ -11,4 +11,7 @@ namespace fieldcvt {
 //! CancelledError). An empty function reports nothing.
 using Progress = std::function<bool(const std::string& stage, double percent)>;
 
+//! The stage's name in a Progress stage string: its first word ("cvt" for "cvt 12/65").
+inline std::string stageName(const std::string& stage) { return stage.substr(0, stage.find(' ')); }
+
 }  // namespace fieldcvt

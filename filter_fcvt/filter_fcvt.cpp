@@ -160,10 +160,9 @@ QString stageLabel(const std::string& stage)
         {"metrics", "measuring quality"},
         {"done", "done"},
     };
-    // "cvt 12/65": the first word names the stage, the rest is the step.
-    const size_t space = stage.find(' ');
-    const std::string key = stage.substr(0, space);
-    const QString step = space == std::string::npos ? QString() : QString::fromStdString(stage.substr(space));
+    // "cvt 12/65": the stage's label, then its step.
+    const std::string key = fieldcvt::stageName(stage);
+    const QString step = QString::fromStdString(stage.substr(key.size()));
     const auto it = labels.find(key);
     return QString("FCVT: ") + (it != labels.end() ? QString(it->second) : QString::fromStdString(key)) + step;
 }
