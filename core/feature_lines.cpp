@@ -109,8 +109,8 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const auto& x, const auto& y) { return x.first > y.first; });
     const double spacing2 = cornerSpacing * cornerSpacing;
-    for (const auto& [importance, v] : candidates) {
-        (void)importance;
+    for (const auto& candidate : candidates) {
+        const int v = candidate.second;
         bool isolated = true;
         for (int kept : lines.corners)
             if ((surface.vertices[size_t(kept)] - surface.vertices[size_t(v)]).squaredNorm() < spacing2) {
