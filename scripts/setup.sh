@@ -26,13 +26,10 @@ done
 src_list=/etc/apt/sources.list.d/fcvt-deb-src.sources
 need_update=0
 if ! grep -rqs '^Types:.*deb-src' /etc/apt/sources.list.d/ && ! grep -qs '^deb-src' /etc/apt/sources.list; then
-  cat > "$src_list" <<'SRC'
-Types: deb-src
-URIs: http://deb.debian.org/debian
-Suites: bookworm
-Components: main
-Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
-SRC
+  # The archive address is the one this machine's apt already uses (scripts/apt-archive.sh).
+  archive="$(bash "$here/scripts/apt-archive.sh" bookworm)"
+  printf 'Types: deb-src\nURIs: %s\nSuites: bookworm\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+    "$archive" > "$src_list"
   need_update=1
 fi
 
