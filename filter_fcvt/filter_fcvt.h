@@ -46,6 +46,12 @@ public:
     static constexpr const char* kFeatureAngle = "featureAngle";
     static constexpr const char* kFeatureSelection = "featureSelection";
     static constexpr const char* kAdaptive = "adaptive";
+    //! Remeshing: the density source (enum: uniform / curvature / vertex quality; older scripts
+    //! carry it as a bool, true = vertex quality) and the curvature gradation.
+    static constexpr const char* kGradation = "gradation";
+    //! Field: at most this many crosses in the drawing layer.
+    static constexpr const char* kMaxCrosses = "maxCrosses";
+    static constexpr int kDefaultMaxCrosses = 2000;
     //! Remeshing (default off) and quality report (default on): colour vertices by valence.
     static constexpr const char* kColorIrregular = "colorIrregular";
     //! Quality report: the layer d_RMS / d_H are measured against (itself = no distances).
@@ -73,11 +79,18 @@ private:
                     vcg::CallBackPos* cb);
     //! The typed body of "Remeshing Quality Report (FCVT)" (`reference` null: no distances).
     bool qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular, vcg::CallBackPos* cb);
-    //! The typed body of "Compute 6-RoSy Field".
-    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, vcg::CallBackPos* cb);
+    //! The typed body of "Compute 6-RoSy Field" (at most `maxCrosses` crosses drawn).
+    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, int maxCrosses,
+                          vcg::CallBackPos* cb);
+    //! Takes back the GUI's "modified" mark on layer `layerId` after this filter (see the .cpp).
+    static void keepUnmodified(MeshDocument& md, int layerId);
     //! Fails the filter: sets errorMessage and also logs it, because meshlabserver 2020.09 prints
     //! the filter log but never errorMsg().
     bool fail(const QString& message);
+    //! Log lines (info / warning, shown red in the GUI) through plainLogText(), so that MeshLab's
+    //! HTML log shows all of their text.
+    void logInfo(const QString& line);
+    void logWarning(const QString& line);
     //! The current layer if it holds faces; otherwise nullptr, with errorMessage set.
     MeshModel* currentTriangleLayer(MeshDocument& md);
     void logReport(const fieldcvt::RemeshResult& result, const QString& layerName);
