@@ -58,3 +58,9 @@ add_test(NAME meshlab_gui_smoke
   COMMAND bash "${_fcvt_ml_dir}/gui_smoke.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/gui_smoke")
 set_tests_properties(meshlab_gui_smoke PROPERTIES LABELS meshlab TIMEOUT 400 SKIP_RETURN_CODE 77)
+# Issue 15 in the GUI: the field filter applied with xdotool (layer left unmodified, its
+# drawing checked on the screenshot) and the remeshing dialog's default size.
+add_test(NAME meshlab_gui_field_dialog
+  COMMAND bash "${_fcvt_ml_dir}/gui_field_dialog.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/gui_field_dialog")
+set_tests_properties(meshlab_gui_field_dialog PROPERTIES LABELS meshlab TIMEOUT 600 SKIP_RETURN_CODE 77)
