@@ -137,13 +137,8 @@ set -u
 work="$1"; width="$2"; height="$3"; zoom="$4"; info="$5"
 HOME="$work/home" XDG_RUNTIME_DIR="$work/runtime" "$work/stage/bin/meshlab" "$work/picture.mlp" >"$work/gui.log" 2>&1 &
 pid=$!
-wid=""
-for _ in $(seq 1 120); do
-  wid="$(xdotool search --name '^MeshLab 20' 2>/dev/null | head -n 1)"
-  [ -n "$wid" ] && break
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.5
-done
+source "$FCVT_WINDOW_HELPER"
+wid="$(wait_meshlab_window "$pid")"
 sleep 3   # let it load the mesh
 if [ -n "$wid" ] && kill -0 "$pid" 2>/dev/null; then
   # No window manager: showMaximized() does nothing, so size the window by hand; then hide
@@ -171,7 +166,7 @@ else
 fi
 INSIDE
 set +e
-timeout 300 xvfb-run -a -s "-screen 0 ${screen}x24" bash "$work/inside.sh" "$work" "${screen%x*}" "${screen#*x}" "$zoom" "$info" \
+FCVT_WINDOW_HELPER="$here/scripts/meshlab_window.sh" timeout 300 xvfb-run -a -s "-screen 0 ${screen}x24" bash "$work/inside.sh" "$work" "${screen%x*}" "${screen#*x}" "$zoom" "$info" \
   >"$work/xvfb.log" 2>&1
 set -e
 [ "$(cat "$work/gui-status.txt" 2>/dev/null)" = closed ] || { cat "$work/xvfb.log" "$work/gui.log" >&2 || true; die "the GUI did not stay up"; }

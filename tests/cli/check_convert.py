@@ -9,7 +9,8 @@ import math
 import os
 import sys
 
-from fcvt_check import check, finish, run
+import fcvt_check
+from fcvt_check import bad_mesh_files, check, finish, run, write_file
 
 fcvt, resources, work = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(work, exist_ok=True)
@@ -94,34 +95,16 @@ for name in ["bunny", "torus"]:
         check("removed 1113 unreferenced vertices" in stderr, f"bunny.obj: no warning on its 1113 unreferenced vertices")
 
 
-def write(name, data):
-    path = os.path.join(work, name)
-    with open(path, "wb") as fh:
-        fh.write(data)
-    return path
-
-
 def expect_error(args, code, fragment):
-    got, stdout, stderr = run([fcvt] + args, timeout=300)
-    lines = stderr.splitlines()
-    label = " ".join(os.path.basename(x) for x in args)
-    check(got == code, f"'{label}': exit code {got}, expected {code}")
-    check(len(lines) == 1 and lines[0].startswith("fcvt: error: "), f"'{label}': stderr is not one error line: {stderr!r}")
-    check(fragment in stderr, f"'{label}': stderr {stderr!r} does not mention {fragment!r}")
-    check(stdout == "", f"'{label}': unexpected stdout {stdout!r}")
+    fcvt_check.expect_error(fcvt, args, code, fragment)
 
 
 out = os.path.join(work, "out.ply")
-garbage = write("garbage.obj", b"\x00\x01garbage\nf 1 2 3\n")
-truncated = write("truncated.off", b"OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n")
-truncated_ply = write("truncated.ply", b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
-                      b"property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                      b"end_header\n\x00\x00")
-empty = write("empty.stl", b"")
-cloud = write("cloud.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\n")
-nan_mesh = write("nan.obj", b"v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n")
-bad_index = write("bad-index.off", b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")
-fin = write("fin.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n")
+bad = bad_mesh_files(work)
+garbage, truncated, truncated_ply, empty, cloud, nan_mesh = (
+    bad[k] for k in ["garbage", "truncated", "truncated_ply", "empty", "cloud", "nan"])
+bad_index = write_file(work, "bad-index.off", b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")
+fin = write_file(work, "fin.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n")
 missing = os.path.join(work, "missing.ply")
 for args, code, fragment in [
     (["convert"], 2, "input and an output"),

@@ -32,13 +32,8 @@ out="$1"; height="$2"; mode="$3"; query="$4"; mesh="$5"
 touch "$out/display-started"
 HOME="$out/home" XDG_RUNTIME_DIR="$out/runtime" "$GUI" "$mesh" >"$out/gui-$mode.log" 2>&1 &
 pid=$!
-wid=""
-for _ in $(seq 1 120); do
-  wid="$(xdotool search --name '^MeshLab 20' 2>/dev/null | head -n 1)"
-  [ -n "$wid" ] && break
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.5
-done
+source "$FCVT_WINDOW_HELPER"
+wid="$(wait_meshlab_window "$pid")"
 [ -n "$wid" ] || { echo "no window" >"$out/status-$mode.txt"; exit 0; }
 sleep 3
 xdotool windowmove "$wid" 0 0 windowsize "$wid" 1000 "$height"
@@ -71,7 +66,7 @@ INSIDE
 
 run_gui() {  # SCREEN_HEIGHT MODE QUERY MESH
   set +e
-  GUI="$gui" timeout 300 xvfb-run -a -s "-screen 0 1000x$1x24" bash "$work/out/inside.sh" "$work/out" "$1" "$2" "$3" "$4" \
+  GUI="$gui" FCVT_WINDOW_HELPER="$FCVT_SOURCE_DIR/scripts/meshlab_window.sh" timeout 300 xvfb-run -a -s "-screen 0 1000x$1x24" bash "$work/out/inside.sh" "$work/out" "$1" "$2" "$3" "$4" \
     >"$work/out/xvfb-$2.log" 2>&1
   set -e
   [ -e "$work/out/display-started" ] || skip "the virtual display did not start"
