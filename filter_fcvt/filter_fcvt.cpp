@@ -320,10 +320,11 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
                "boundaries and sharp edges, or the maximal / minimal principal-curvature "
                "direction. Stores one representative direction per vertex as the per-vertex "
-               "attribute <i>rosy</i> (vertices dropped by the input check get (0,0,0)), logs the "
-               "number of singularities, and adds a layer \"6-RoSy field\" that draws the six "
-               "directions at each vertex (a uniform subset on meshes over 20000 vertices) as "
-               "line segments. The geometry of the current mesh is unchanged.";
+               "attribute <i>rosy</i> (vertices on no face get (0,0,0)), logs the number of "
+               "singularities, and adds a layer \"6-RoSy field\" that draws the six directions as "
+               "a cross of thin strips, lifted a little off the surface, at each vertex (at most "
+               "'Crosses drawn' of them, on a uniform grid). The geometry of the current mesh is "
+               "unchanged.";
     case FP_FCVT_QUALITY:
         return "Writes the remeshing quality figures of the current mesh to the log, as in Table 2 "
                "of <b>\"Field-Aligned Isotropic Surface Remeshing\"</b>: Q_min and Q_avg (triangle "
