@@ -79,7 +79,7 @@ double meanEdgeLength(const TriMesh& mesh)
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     double sum = 0;
-    for (const auto& e : edges) sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).norm();
+    for (const auto& e : edges) sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).stableNorm();  // no overflow at 1e300
     return edges.empty() ? 0.0 : sum / double(edges.size());
 }
 
