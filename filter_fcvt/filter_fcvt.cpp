@@ -18,6 +18,7 @@
 #include "mesh_convert.h"
 #include "metrics.h"
 #include "valence_colour.h"
+#include "working_frame.h"
 
 namespace {
 
@@ -641,6 +642,20 @@ MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
     return input;
 }
 
+fieldcvt::TriMesh FilterFcvtPlugin::surfaceOf(const MeshModel& layer)
+{
+    int flipped = 0;
+    fieldcvt::TriMesh mesh = fcvt_plugin::toSurfaceMesh(layer.cm, flipped);
+    if (flipped > 0)
+        Log(GLLogStream::WARNING,
+            QString("FCVT input: flipped %1 zero-area triangles of '%2' into their neighbours (a fan "
+                    "over a polygon's straight corner; removing them would tear the surface)")
+                .arg(flipped)
+                .arg(layer.label())
+                .toStdString());
+    return mesh;
+}
+
 bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
                                   const RemeshInputs& inputs, vcg::CallBackPos* cb)
 {
@@ -648,7 +663,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     if (input == nullptr)
         return false;
 
-    fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
+    fieldcvt::TriMesh in = surfaceOf(*input);
     fieldcvt::RemeshParams run = params;
     if (run.fieldSource == fieldcvt::FieldSource::User) {
         // One vector per live vertex, in the order of toTriMesh.
@@ -838,7 +853,7 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
 
     if (cb != nullptr)
         cb(0, "checking the input");
-    const fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
+    const fieldcvt::TriMesh in = surfaceOf(*input);
     fieldcvt::InputReport report;
     const fieldcvt::TriMesh clean = fieldcvt::prepareInput(in, report);
     if (report.cleanIndex.size() != in.vertices.size())
@@ -847,7 +862,10 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
                               " vertices");
     if (cb != nullptr)
         cb(10, "computing the 6-RoSy field");
-    const fieldcvt::DirectionField field = fieldcvt::computeField(clean, params);
+    // As the remeshing does: on the surface centred and scaled to unit cells (one per vertex).
+    const fieldcvt::TriMesh work =
+        fieldcvt::inFrame(clean, fieldcvt::workingFrame(clean, clean.vertexCount()));
+    const fieldcvt::DirectionField field = fieldcvt::computeField(work, params);
     if (field.directions.size() != clean.vertices.size())
         throw fieldcvt::Error("the field has " + std::to_string(field.directions.size()) +
                               " directions for " + std::to_string(clean.vertices.size()) +
@@ -855,7 +873,7 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
     if (cb != nullptr)
         cb(80, "finding singularities");
     const std::vector<fieldcvt::Singularity> singularities =
-        fieldcvt::findSingularities(clean, field);
+        fieldcvt::findSingularities(work, field);
 
     // Everything is computed: now change the document. The drawing layer is removed again if
     // filling it fails; the attribute is written last.

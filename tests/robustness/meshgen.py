@@ -104,6 +104,31 @@ def quad_cube(cells=4):
     return v, f
 
 
+def polygon_cube(cells=2):
+    """A closed cube whose six faces are single polygons of 4 * cells corners: the square's corners
+    and cells - 1 vertices on each of its edges (straight, 180-degree corners), shared with the
+    neighbouring faces. A fan from a polygon's first corner makes zero-area triangles here."""
+    v, quads = quad_cube(cells)
+    used = set()
+    f = []
+    for axis in range(3):
+        for side in (0, 1):
+            ring = []
+            # The border of this side's grid, walked once around (counter-clockwise from outside).
+            for i, j in ([(i, 0) for i in range(cells)] + [(cells, j) for j in range(cells)] +
+                         [(i, cells) for i in range(cells, 0, -1)] + [(0, j) for j in range(cells, 0, -1)]):
+                p = [0.0, 0.0, 0.0]
+                p[axis] = float(side)
+                p[(axis + 1) % 3] = i / cells
+                p[(axis + 2) % 3] = j / cells
+                ring.append(next(k for k, q in enumerate(v) if q == [c * 2 - 1 for c in p]))
+            f.append(ring if side == 1 else ring[::-1])
+            used.update(ring)
+    keep = sorted(used)
+    index = {old: new for new, old in enumerate(keep)}
+    return [v[k] for k in keep], [[index[c] for c in face] for face in f]
+
+
 def cone(apex, direction, k=10, apex_index=None, v=None, f=None):
     """Appends a closed cone (apex, ring of k, cap centre) to (v, f); returns them."""
     v = [] if v is None else v
