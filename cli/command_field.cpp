@@ -62,7 +62,7 @@ int runField(const std::vector<std::string>& args)
     if (params.source == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
                          inPath + " is not a .ply file");
-    checkOutputPath(outPath);
+    checkOutputPath(outPath, inPath);
 
     const auto start = std::chrono::steady_clock::now();
     MeshReadInfo readInfo;

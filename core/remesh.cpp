@@ -33,9 +33,8 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 void validate(const RemeshParams& p)
 {
     if (p.initialSamples.empty()) {
-        if (p.vertexCount < 4) throw InvalidInputError("vertex count must be at least 4 (got " + std::to_string(p.vertexCount) + ")");
-        if (p.vertexCount > 50000000)
-            throw InvalidInputError("vertex count " + std::to_string(p.vertexCount) + " is too large (at most 50000000)");
+        if (p.vertexCount < kMinVertexCount || p.vertexCount > kMaxVertexCount)
+            throw InvalidInputError("the vertex count must be " + vertexCountRange() + ", got " + std::to_string(p.vertexCount));
     } else {
         if (p.initialSamples.size() < 4)
             throw InvalidInputError("at least 4 initial samples are needed (got " + std::to_string(p.initialSamples.size()) + ")");
@@ -115,6 +114,8 @@ private:
 };
 
 }  // namespace
+
+std::string vertexCountRange() { return "between " + std::to_string(kMinVertexCount) + " and " + std::to_string(kMaxVertexCount); }
 
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
 {

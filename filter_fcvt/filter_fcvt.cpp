@@ -25,12 +25,11 @@ namespace {
 // Upper end of the default vertexCount: the paper's typical output size (Table 1), and a run
 // of a few seconds on two cores; inputs with fewer vertices default to their own count.
 constexpr int kDefaultMaxVertices = 5000;
-constexpr int kMinVertices = 4;
 
 int defaultVertexCount(const MeshModel* m)
 {
     const int vn = m != nullptr ? m->cm.vn : kDefaultMaxVertices;
-    return std::max(kMinVertices, std::min(vn, kDefaultMaxVertices));
+    return std::max(fieldcvt::kMinVertexCount, std::min(vn, kDefaultMaxVertices));
 }
 
 // Bounding-box diagonal of the layer (1 without a mesh): the range of targetLength.
@@ -43,23 +42,6 @@ float bboxDiagonal(const MeshModel* m)
 // The sizeMode enum (index = value in .mlx scripts, frozen).
 enum SizeMode { kSizeByVertexCount = 0, kSizeByTargetLength = 1 };
 const QStringList kSizeModeLabels = {"vertex count", "target edge length"};
-
-// Above this a target edge length is taken for a mistake (hours of run time, gigabytes).
-constexpr double kMaxVerticesFromLength = 5e6;
-
-// Surface area of the live faces (coordinates as stored, like toTriMesh).
-double surfaceArea(const CMeshO& cm)
-{
-    double area = 0;
-    for (const CFaceO& f : cm.face) {
-        if (f.IsD())
-            continue;
-        const Point3m e1 = f.cP(1) - f.cP(0);
-        const Point3m e2 = f.cP(2) - f.cP(0);
-        area += 0.5 * double((e1 ^ e2).Norm());
-    }
-    return area;
-}
 
 // Mean length over the distinct (undirected) edges of the faces.
 double meanEdgeLength(const fieldcvt::TriMesh& mesh)
@@ -545,17 +527,18 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
             return false;
         if (!(targetLength > 0) || !std::isfinite(targetLength))
             return fail(QString("FCVT: targetLength must be a number > 0 (got %1)").arg(targetLength));
-        const double area = surfaceArea(input->cm);
+        // In double and scale-robust (a float cross product overflows from coordinates ~1e10).
+        const double area = fieldcvt::surfaceArea(fcvt_plugin::toTriMesh(input->cm));
         // Equilateral triangulation of edge L: about 2 faces per vertex of area sqrt(3) L^2 / 4.
         const double wanted = 2.0 * area / (std::sqrt(3.0) * targetLength * targetLength);
-        if (!std::isfinite(wanted) || wanted > kMaxVerticesFromLength)
-            return fail(QString("FCVT: targetLength %1 on a surface of area %2 would give %3 "
-                                "vertices, more than the maximum %4; choose a longer edge")
+        if (!std::isfinite(wanted) || wanted > fieldcvt::kMaxVertexCount)
+            return fail(QString("FCVT: targetLength %1 on a surface of area %2 gives %3 vertices; "
+                                "the vertex count must be %4: choose a longer edge")
                             .arg(targetLength)
                             .arg(area)
-                            .arg(wanted, 0, 'g', 4)
-                            .arg(kMaxVerticesFromLength, 0, 'g', 4));
-        const int fromLength = std::max(kMinVertices, int(std::lround(wanted)));
+                            .arg(wanted, 0, 'g', 3)
+                            .arg(QString::fromStdString(fieldcvt::vertexCountRange())));
+        const int fromLength = std::max(fieldcvt::kMinVertexCount, int(std::lround(wanted)));
         Log(QString("FCVT size: target edge length %1 on area %2 -> %3 vertices")
                 .arg(targetLength)
                 .arg(area)
@@ -563,9 +546,9 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
                 .toStdString());
         vertexCount = fromLength;
     }
-    if (vertexCount < kMinVertices)
-        return fail(QString("FCVT: vertexCount must be at least %1 (got %2)")
-                        .arg(kMinVertices)
+    if (vertexCount < fieldcvt::kMinVertexCount || vertexCount > fieldcvt::kMaxVertexCount)
+        return fail(QString("FCVT: vertexCount must be %1 (got %2)")
+                        .arg(QString::fromStdString(fieldcvt::vertexCountRange()))
                         .arg(vertexCount));
     if (!(lambda >= 0) || !std::isfinite(lambda))
         return fail(QString("FCVT: lambda must be a finite number >= 0 (got %1)").arg(lambda));
