@@ -41,6 +41,27 @@ def icosphere(levels=1, radius=1.0):
     return [[c * radius for c in p] for p in v], f
 
 
+def uv_sphere(rings=12, segments=24, radius=1.0):
+    """A closed UV sphere: two poles and rings x segments quads split into triangles."""
+    v = [[0.0, 0.0, radius]]
+    for i in range(1, rings):
+        t = math.pi * i / rings
+        v += [[radius * math.sin(t) * math.cos(2 * math.pi * j / segments),
+               radius * math.sin(t) * math.sin(2 * math.pi * j / segments), radius * math.cos(t)] for j in range(segments)]
+    v.append([0.0, 0.0, -radius])
+    south = len(v) - 1
+
+    def ring(i, j):
+        return 1 + (i - 1) * segments + j % segments
+
+    f = [[0, ring(1, j), ring(1, j + 1)] for j in range(segments)]
+    for i in range(1, rings - 1):
+        for j in range(segments):
+            f += [[ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)], [ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)]]
+    f += [[south, ring(rings - 1, j + 1), ring(rings - 1, j)] for j in range(segments)]
+    return v, f
+
+
 def torus(n=16, m=8, R=1.0, r=0.35):
     v = []
     for i in range(n):
