@@ -127,11 +127,21 @@ int flipZeroAreaTriangles(TriMesh& mesh)
             }
             const int b = t[mid], a = t[(mid + 1) % 3], c = t[(mid + 2) % 3];
             const Vec3& pb = mesh.vertices[b];
-            const auto it = facesOf.find(edgeOf(a, c));
+            // The neighbour: the one face of non-zero area on a-c, or, when an adjacent polygon's
+            // fan put a zero-area triangle on the same edge, the one running c -> a (t runs a -> c).
             int other = -1;
-            if (!touched[f] && pb != mesh.vertices[a] && pb != mesh.vertices[c] && it != facesOf.end() && it->second.size() == 2)
-                other = it->second[0] == f ? it->second[1] : it->second[0];
-            if (other < 0 || touched[other] || isZeroArea(mesh, mesh.faces[other])) {
+            if (!touched[f] && pb != mesh.vertices[a] && pb != mesh.vertices[c]) {
+                std::vector<int> any, opposite;
+                for (int g : facesOf[edgeOf(a, c)]) {
+                    if (g == f || isZeroArea(mesh, mesh.faces[g])) continue;
+                    any.push_back(g);
+                    const Face& u = mesh.faces[g];
+                    for (int j = 0; j < 3; ++j)
+                        if (u[j] == c && u[(j + 1) % 3] == a) opposite.push_back(g);
+                }
+                other = opposite.size() == 1 ? opposite[0] : any.size() == 1 ? any[0] : -1;
+            }
+            if (other < 0 || touched[other]) {
                 remaining.push_back(f);
                 continue;
             }
