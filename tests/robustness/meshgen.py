@@ -320,6 +320,32 @@ def read_obj(path):
     return v, f
 
 
+def boundary_loops_and_components(mesh):
+    """(boundary loops, connected components through shared edges) of a manifold triangle mesh."""
+    v, f = mesh
+    edges = {}
+    for i, t in enumerate(f):
+        for k in range(3):
+            edges.setdefault((min(t[k], t[(k + 1) % 3]), max(t[k], t[(k + 1) % 3])), []).append(i)
+    parent = list(range(len(v)))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    border = [e for e, faces in edges.items() if len(faces) == 1]
+    for a, b in border:
+        parent[find(a)] = find(b)
+    loops = len({find(a) for a, _ in border})
+    parent = list(range(len(f)))
+    for faces in edges.values():
+        for other in faces[1:]:
+            parent[find(faces[0])] = find(other)
+    return loops, len({find(i) for i in range(len(f))})
+
+
 def manifold_problems(mesh):
     """Why a mesh is not a valid manifold triangle mesh (empty list if it is one)."""
     v, f = mesh
