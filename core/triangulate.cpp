@@ -130,9 +130,10 @@ int flipZeroAreaTriangles(TriMesh& mesh)
             // The neighbour: the one face of non-zero area on a-c, or, when an adjacent polygon's
             // fan put a zero-area triangle on the same edge, the one running c -> a (t runs a -> c).
             int other = -1;
-            if (!touched[f] && pb != mesh.vertices[a] && pb != mesh.vertices[c]) {
+            const auto on = facesOf.find(edgeOf(a, c));
+            if (!touched[f] && pb != mesh.vertices[a] && pb != mesh.vertices[c] && on != facesOf.end()) {
                 std::vector<int> any, opposite;
-                for (int g : facesOf[edgeOf(a, c)]) {
+                for (int g : on->second) {
                     if (g == f || isZeroArea(mesh, mesh.faces[g])) continue;
                     any.push_back(g);
                     const Face& u = mesh.faces[g];
