@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 namespace fieldcvt::cli {
@@ -26,12 +29,29 @@ FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser
     return source;
 }
 
-void checkOutputPath(const std::string& path)
+void checkWritable(const std::string& path, const std::string& input)
 {
-    checkMeshExtension(path);
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw IOError(path + ": is a directory, not a file to write");
+    const bool existed = fs::exists(path, ec);
+    if (existed && fs::equivalent(path, input, ec))
+        throw IOError(path + ": is the input file " + input + "; choose another output (it would be overwritten)");
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
         throw IOError(path + ": cannot write: directory " + parent.string() + " does not exist");
+    std::FILE* probe = std::fopen(path.c_str(), "ab");  // append: an existing file keeps its bytes
+    if (probe == nullptr) throw IOError(path + ": cannot write: " + std::strerror(errno));
+    std::fclose(probe);
+    if (!existed) fs::remove(path, ec);
+}
+
+void checkOutputPath(const std::string& path, const std::string& input)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::is_directory(path, ec)) checkMeshExtension(path);  // a directory: "is a directory", not "unknown extension ''"
+    checkWritable(path, input);
 }
 
 bool isPlyPath(const std::string& path)

@@ -17,9 +17,15 @@ namespace fieldcvt::cli {
 //! unknown name, or "user" when `allowUser` is false, is a UsageError listing the valid names.
 FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser);
 
-//! What would make the final write fail, found before the long part rather than after it: the
-//! extension and the directory (IOError, exit 1).
-void checkOutputPath(const std::string& path);
+//! What would make the final write of `path` fail or destroy the input, found before the long
+//! part rather than after it (IOError, exit 1): a directory, the file `input` itself (also
+//! through another path or a link), a missing directory, or a file that cannot be opened for
+//! writing (a read-only directory or file, /proc). The check opens the file without truncating
+//! it, and removes it again if that created it.
+void checkWritable(const std::string& path, const std::string& input);
+
+//! checkWritable, and a mesh extension writeMesh handles.
+void checkOutputPath(const std::string& path, const std::string& input);
 
 //! True when the path ends in .ply (any case).
 bool isPlyPath(const std::string& path);

@@ -68,7 +68,7 @@ void printUsage()
         "meshlab-isotropic the whole last meshlabserver run, start-up and file I/O included).\n"
         "\n"
         "Options:\n"
-        "  --vertices N   target vertex count, >= 4 (required)\n"
+        "  --vertices N   target vertex count, %s (required)\n"
         "  --seed S       seed of the sampling and the field, >= 0 (default %llu)\n"
         "  --lambda L     the FCVT row's weight of the field term, >= 0 (default %g)\n"
         "  --field F      the FCVT row's field: extrinsic, curvature-max, curvature-min or user\n"
@@ -85,7 +85,7 @@ void printUsage()
         "  --quiet        no progress output\n"
         "  -h, --help     show this help\n",
         cvt.lambda, cvt.cvtIterations, cvt.fcvtIterations, fcvt.lambda, fcvt.cvtIterations, fcvt.fcvtIterations,
-        static_cast<unsigned long long>(fcvt.seed), fcvt.lambda, fieldSourceName(fcvt.fieldSource).c_str(),
+        vertexCountRange().c_str(), static_cast<unsigned long long>(fcvt.seed), fcvt.lambda, fieldSourceName(fcvt.fieldSource).c_str(),
         fcvt.threads, kMeshlabIterations);
 }
 
@@ -196,7 +196,7 @@ int runCompare(const std::vector<std::string>& args)
     const std::string& inPath = fileArguments(a, 1, "compare", "exactly one input file")[0];
     if (!a.has("vertices")) throw UsageError("compare needs --vertices N (the target vertex count)");
     RemeshParams fcvt;
-    fcvt.vertexCount = static_cast<int>(a.integer("vertices", fcvt.vertexCount, 4, INT_MAX));
+    fcvt.vertexCount = static_cast<int>(a.integer("vertices", fcvt.vertexCount, kMinVertexCount, kMaxVertexCount));
     fcvt.seed = a.unsignedInteger("seed", fcvt.seed);
     fcvt.lambda = a.number("lambda", fcvt.lambda, 0.0);
     fcvt.fieldSource = fieldOption(a, fcvt.fieldSource, true);
@@ -222,7 +222,8 @@ int runCompare(const std::vector<std::string>& args)
         for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         return *savePrefix + "-" + lower + ".ply";
     };
-    if (savePrefix) checkOutputPath(savePath("fcvt"));
+    if (savePrefix)
+        for (const char* method : {"cvt", "fcvt", "meshlab-isotropic"}) checkOutputPath(savePath(method), inPath);
 
     MeshReadInfo readInfo;
     VertexAttributes attributes;

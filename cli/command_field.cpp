@@ -9,6 +9,7 @@
 #include "mesh_check.h"
 #include "mesh_io.h"
 #include "metrics.h"
+#include "working_frame.h"
 
 #include <chrono>
 #include <cstdio>
@@ -61,7 +62,7 @@ int runField(const std::vector<std::string>& args)
     if (params.source == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
                          inPath + " is not a .ply file");
-    checkOutputPath(outPath);
+    checkOutputPath(outPath, inPath);
 
     const auto start = std::chrono::steady_clock::now();
     MeshReadInfo readInfo;
@@ -71,25 +72,28 @@ int runField(const std::vector<std::string>& args)
     for (const std::string& note : readInfo.notes) warnings.push_back(inPath + ": " + note);
 
     InputReport cleaning;
-    TriMesh mesh;
+    TriMesh mesh, work;
     DirectionField field;
     try {
         mesh = prepareInput(input, cleaning);
+        // As remesh does: computed on the surface centred and scaled to unit cells (one per
+        // vertex), so the model's size does not matter; the directions are the same in both.
+        work = inFrame(mesh, workingFrame(mesh, mesh.vertexCount()));
         if (params.source == FieldSource::User) {
             const std::vector<Vec3>& vectors = userField(inPath, inputAttributes);
             std::vector<Vec3> clean(mesh.vertices.size(), Vec3::Zero());
             for (std::size_t v = 0; v < vectors.size() && v < cleaning.cleanIndex.size(); ++v)
                 if (cleaning.cleanIndex[v] >= 0) clean[cleaning.cleanIndex[v]] = vectors[v];
-            field = fieldFromVectors(mesh, clean, params.seed);
+            field = fieldFromVectors(work, clean, params.seed);
         } else {
-            field = computeField(mesh, params);
+            field = computeField(work, params);
         }
     } catch (const InvalidInputError& e) {
         throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
     }
     for (const std::string& note : cleaning.notes) warnings.push_back(inPath + ": " + note);
 
-    const std::vector<Singularity> singularities = findSingularities(mesh, field);
+    const std::vector<Singularity> singularities = findSingularities(work, field);
     VertexAttributes attributes;
     attributes.normals = field.normals;
     attributes.rosy = field.directions;

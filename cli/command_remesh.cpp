@@ -34,7 +34,7 @@ void printUsage()
         "OUT also gets the field at its vertices (nx ny nz, rosy_x rosy_y rosy_z) when one was used.\n"
         "\n"
         "Options:\n"
-        "  --vertices N          target vertex count, >= 4\n"
+        "  --vertices N          target vertex count, %s\n"
         "  --target-length L     target edge length (IN's units), > 0, instead of --vertices: the\n"
         "                        vertex count is 2 * area / (sqrt(3) * L^2); exactly one is required\n"
         "  --field F             the field to align to: extrinsic (smooth, Instant Meshes),\n"
@@ -60,13 +60,10 @@ void printUsage()
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise)\n"
         "  -h, --help            show this help\n",
-        fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.cvtIterations,
+        vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.cvtIterations,
         defaults.fcvtIterations, defaults.featureAngleDegrees, defaults.gradation,
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
-
-// Above this a --target-length is taken for a mistake (hours of run time, gigabytes).
-constexpr double kMaxVerticesFromLength = 5e6;
 
 // Mean length over the distinct (undirected) edges of the faces.
 double meanEdgeLength(const TriMesh& mesh)
@@ -79,7 +76,7 @@ double meanEdgeLength(const TriMesh& mesh)
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     double sum = 0;
-    for (const auto& e : edges) sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).norm();
+    for (const auto& e : edges) sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).stableNorm();  // no overflow at 1e300
     return edges.empty() ? 0.0 : sum / double(edges.size());
 }
 
@@ -88,11 +85,12 @@ int vertexCountForLength(const TriMesh& input, double length)
 {
     const double area = surfaceArea(input);
     const double wanted = 2.0 * area / (std::sqrt(3.0) * length * length);
-    if (!std::isfinite(wanted) || wanted > kMaxVerticesFromLength)
-        throw UsageError("--target-length " + std::to_string(length) + " on a surface of area " + std::to_string(area) +
-                         " would give " + std::to_string(wanted) + " vertices, more than the maximum " +
-                         std::to_string(static_cast<long long>(kMaxVerticesFromLength)) + "; choose a longer edge");
-    return std::max(4, static_cast<int>(std::lround(wanted)));
+    if (!std::isfinite(wanted) || wanted > kMaxVertexCount) {
+        char text[160];
+        std::snprintf(text, sizeof text, "--target-length %g on a surface of area %g gives %.3g vertices; ", length, area, wanted);
+        throw UsageError(text + std::string("the vertex count must be ") + vertexCountRange() + ": choose a longer edge");
+    }
+    return std::max(kMinVertexCount, static_cast<int>(std::lround(wanted)));
 }
 
 RemeshParams paramsFrom(const Arguments& a)
@@ -101,7 +99,7 @@ RemeshParams paramsFrom(const Arguments& a)
         throw UsageError("remesh needs exactly one of --vertices N (the target vertex count) and --target-length L "
                          "(the target edge length)");
     RemeshParams p;
-    if (a.has("vertices")) p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, 4, INT_MAX));
+    if (a.has("vertices")) p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, kMinVertexCount, kMaxVertexCount));
     p.fieldSource = fieldOption(a, p.fieldSource, true);
     p.lambda = a.number("lambda", p.lambda, 0.0);
     p.cvtIterations = static_cast<int>(a.integer("cvt-iterations", p.cvtIterations, 0, INT_MAX));
@@ -165,7 +163,8 @@ int runRemesh(const std::vector<std::string>& args)
     if (params.fieldSource == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
                          inPath + " is not a .ply file");
-    checkOutputPath(outPath);
+    checkOutputPath(outPath, inPath);
+    if (const auto reportPath = a.text("report")) checkWritable(*reportPath, inPath);
 
     const auto start = std::chrono::steady_clock::now();
     MeshReadInfo readInfo;

@@ -92,9 +92,10 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
     faceOrigin.reserve(input.faces.size());
     for (int f = 0; f < input.faceCount(); ++f) {
         const Face t{rep[input.faces[f][0]], rep[input.faces[f][1]], rep[input.faces[f][2]]};
-        const Vec3& a = input.vertices[t[0]];
-        const Vec3 normal = (input.vertices[t[1]] - a).cross(input.vertices[t[2]] - a);
-        // Exact zero test (not squaredNorm() == 0, which underflows on tiny but valid faces).
+        int exponent = 0;
+        const Vec3 normal = scaledCross(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]], exponent);
+        // Exact zero test (not squaredNorm() == 0, which underflows on tiny but valid faces), on
+        // the scaled edges: a face of a 1e-170 model is not degenerate.
         if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || (normal.array() == 0.0).all()) {
             ++report.removedDegenerateFaces;
             continue;
@@ -198,8 +199,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
     report.componentAreas.assign(report.components, 0.0);
     for (int f = 0; f < faceCount; ++f) {
         const Face& t = faces[f];
-        const Vec3& a = input.vertices[t[0]];
-        report.componentAreas[component[f]] += 0.5 * (input.vertices[t[1]] - a).cross(input.vertices[t[2]] - a).norm();
+        report.componentAreas[component[f]] += triangleArea(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
     }
 
     // 5. Non-manifold vertices: corners of the faces around a vertex are joined across the

@@ -12,6 +12,7 @@
 #include "boundary.h"
 #include "feature_lines.h"
 #include "valence.h"
+#include "working_frame.h"
 
 #include <omp.h>
 
@@ -32,9 +33,8 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 void validate(const RemeshParams& p)
 {
     if (p.initialSamples.empty()) {
-        if (p.vertexCount < 4) throw InvalidInputError("vertex count must be at least 4 (got " + std::to_string(p.vertexCount) + ")");
-        if (p.vertexCount > 50000000)
-            throw InvalidInputError("vertex count " + std::to_string(p.vertexCount) + " is too large (at most 50000000)");
+        if (p.vertexCount < kMinVertexCount || p.vertexCount > kMaxVertexCount)
+            throw InvalidInputError("the vertex count must be " + vertexCountRange() + ", got " + std::to_string(p.vertexCount));
     } else {
         if (p.initialSamples.size() < 4)
             throw InvalidInputError("at least 4 initial samples are needed (got " + std::to_string(p.initialSamples.size()) + ")");
@@ -80,15 +80,6 @@ VertexRole roleOf(SampleConstraint c)
     return VertexRole::Free;
 }
 
-// The working frame (§5): centred, and scaled so that the mean restricted Voronoi cell has
-// area 1. Every energy then has the same magnitude whatever the model's units and resolution.
-struct Normalisation {
-    Vec3 centre = Vec3::Zero();
-    double scale = 1;
-    Vec3 toWork(const Vec3& p) const { return (p - centre) * scale; }
-    Vec3 fromWork(const Vec3& p) const { return p / scale + centre; }
-};
-
 // Runs the stages in order, timing each and reporting overall progress.
 class Pipeline {
 public:
@@ -124,6 +115,8 @@ private:
 
 }  // namespace
 
+std::string vertexCountRange() { return "between " + std::to_string(kMinVertexCount) + " and " + std::to_string(kMaxVertexCount); }
+
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
 {
     validate(params);
@@ -149,12 +142,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         cleanIndex = report.cleanIndex;
         result.warnings.insert(result.warnings.end(), report.notes.begin(), report.notes.end());
         result.inputTopology = computeTopology(surface);
-        const double area = surfaceArea(surface);
-        if (!(area > 0) || !std::isfinite(area)) throw InvalidInputError("the surface has no area");
-        Vec3 lo = surface.vertices[0], hi = surface.vertices[0];
-        for (const Vec3& p : surface.vertices) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-        frame.centre = 0.5 * (lo + hi);
-        frame.scale = std::sqrt(sampleCount / area);
+        frame = workingFrame(surface, sampleCount);
         for (Vec3& p : surface.vertices) p = frame.toWork(p);
 
         // Adaptive density (density.h): μ per surface vertex, normalised to an area-weighted
@@ -328,15 +316,15 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         result.outputNormals = frames.normals;
         result.outputDirections = frames.directions;
     }
-    for (Vec3& p : result.mesh.vertices) p = frame.fromWork(p);
     result.evaluations = energy.evaluations();
 
+    // Measured in the working frame (the figures are angles and fractions of the diagonal, the
+    // same in every frame), where a model at 1e300 does not overflow them.
     pipeline.run("metrics", [&] {
         pipeline.report("metrics", 95);
         result.metrics = computeQuality(result.mesh);
         if (params.computeDistances && !result.mesh.faces.empty()) {
-            TriMesh reference = surface;
-            for (Vec3& p : reference.vertices) p = frame.fromWork(p);
+            const TriMesh& reference = surface;
             // Dense enough for a Hausdorff figure at the meshes' resolution, capped for big ones.
             const int samples = std::clamp(20 * (result.mesh.faceCount() + reference.faceCount()), 20000, 200000);
             const DistanceMetrics d = computeDistance(result.mesh, reference, samples);
@@ -355,6 +343,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                                       std::to_string(out.boundaryLoops) + " boundary loops, " + std::to_string(out.components) +
                                       " components (use more vertices)");
     });
+    for (Vec3& p : result.mesh.vertices) p = frame.fromWork(p);
     pipeline.report("done", 100);
     result.totalSeconds = secondsSince(start);
     return result;

@@ -22,8 +22,16 @@ namespace fieldcvt {
 //! the uniform cell (density.h).
 enum class DensitySource { Uniform, Curvature, PerVertex };
 
+//! The vertex counts remesh() takes, one limit for the CLI's --vertices and --target-length and
+//! the MeshLab filter's vertexCount and targetLength: 100 000 output vertices took 1.3 GB, so
+//! the maximum needs about 65 GB.
+constexpr int kMinVertexCount = 4;
+constexpr int kMaxVertexCount = 5000000;
+//! "between 4 and 5000000", the one wording of that limit in every message.
+std::string vertexCountRange();
+
 struct RemeshParams {
-    int vertexCount = 5000;  //!< target number of output vertices (samples), >= 4
+    int vertexCount = 5000;  //!< target number of output vertices (samples), kMinVertexCount..kMaxVertexCount
     //! Weight of E_field (eq. 2) on the normalised surface (mean cell area 1, §5); 0 = pure CVT.
     //! Default chosen by measurement (README: λ sweep).
     double lambda = 0.002;

@@ -24,6 +24,7 @@
 #include "mesh_convert.h"
 #include "metrics.h"
 #include "valence_colour.h"
+#include "working_frame.h"
 
 namespace {
 
@@ -39,12 +40,11 @@ using fcvt_plugin::topologyText;
 // Upper end of the default vertexCount: the paper's typical output size (Table 1), and a run
 // of a few seconds on two cores; inputs with fewer vertices default to their own count.
 constexpr int kDefaultMaxVertices = 5000;
-constexpr int kMinVertices = 4;
 
 int defaultVertexCount(const MeshModel* m)
 {
     const int vn = m != nullptr ? m->cm.vn : kDefaultMaxVertices;
-    return std::max(kMinVertices, std::min(vn, kDefaultMaxVertices));
+    return std::max(fieldcvt::kMinVertexCount, std::min(vn, kDefaultMaxVertices));
 }
 
 // Bounding-box diagonal of the layer (1 without a mesh): the range of targetLength.
@@ -84,23 +84,6 @@ int densityChoice(const RichParameterList& par)
     if (v.isBool())
         return v.getBool() ? kDensityVertexQuality : kDensityUniform;
     return v.getInt();
-}
-
-// Above this a target edge length is taken for a mistake (hours of run time, gigabytes).
-constexpr double kMaxVerticesFromLength = 5e6;
-
-// Surface area of the live faces (coordinates as stored, like toTriMesh).
-double surfaceArea(const CMeshO& cm)
-{
-    double area = 0;
-    for (const CFaceO& f : cm.face) {
-        if (f.IsD())
-            continue;
-        const Point3m e1 = f.cP(1) - f.cP(0);
-        const Point3m e2 = f.cP(2) - f.cP(0);
-        area += 0.5 * double((e1 ^ e2).Norm());
-    }
-    return area;
 }
 
 // Mean length over the distinct (undirected) edges of the faces.
@@ -537,28 +520,29 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
             return false;
         if (!(targetLength > 0) || !std::isfinite(targetLength))
             return fail(QString("FCVT: %1 must be a number above 0 (got %2)").arg(parameterName(kTargetLength)).arg(targetLength));
-        const double area = surfaceArea(input->cm);
+        // In double and scale-robust (a float cross product overflows from coordinates ~1e10).
+        const double area = fieldcvt::surfaceArea(fcvt_plugin::toTriMesh(input->cm));
         // Equilateral triangulation of edge L: about 2 faces per vertex of area sqrt(3) L^2 / 4.
         const double wanted = 2.0 * area / (std::sqrt(3.0) * targetLength * targetLength);
-        if (!std::isfinite(wanted) || wanted > kMaxVerticesFromLength)
-            return fail(QString("FCVT: %1 %2 on a surface of area %3 would give %4 "
-                                "vertices, more than the maximum %5; choose a longer edge")
+        if (!std::isfinite(wanted) || wanted > fieldcvt::kMaxVertexCount)
+            return fail(QString("FCVT: %1 %2 on a surface of area %3 gives %4 vertices; "
+                                "the vertex count must be %5: choose a longer edge")
                             .arg(parameterName(kTargetLength))
                             .arg(targetLength)
                             .arg(area)
-                            .arg(wanted, 0, 'g', 4)
-                            .arg(kMaxVerticesFromLength, 0, 'g', 4));
-        const int fromLength = std::max(kMinVertices, int(std::lround(wanted)));
+                            .arg(wanted, 0, 'g', 3)
+                            .arg(QString::fromStdString(fieldcvt::vertexCountRange())));
+        const int fromLength = std::max(fieldcvt::kMinVertexCount, int(std::lround(wanted)));
         logInfo(QString("FCVT size: target edge length %1 on area %2 gives %3 vertices")
                 .arg(targetLength)
                 .arg(area)
                 .arg(fromLength));
         vertexCount = fromLength;
     }
-    if (vertexCount < kMinVertices)
-        return fail(QString("FCVT: %1 must be at least %2 (got %3)")
+    if (vertexCount < fieldcvt::kMinVertexCount || vertexCount > fieldcvt::kMaxVertexCount)
+        return fail(QString("FCVT: %1 must be %2 (got %3)")
                         .arg(parameterName(kVertexCount))
-                        .arg(kMinVertices)
+                        .arg(QString::fromStdString(fieldcvt::vertexCountRange()))
                         .arg(vertexCount));
     if (!(lambda >= 0) || !std::isfinite(lambda))
         return fail(QString("FCVT: %1 must be a finite number, 0 or more (got %2)").arg(parameterName(kLambda)).arg(lambda));
@@ -657,6 +641,20 @@ MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
     return input;
 }
 
+fieldcvt::TriMesh FilterFcvtPlugin::surfaceOf(const MeshModel& layer)
+{
+    int flipped = 0;
+    fieldcvt::TriMesh mesh = fcvt_plugin::toSurfaceMesh(layer.cm, flipped);
+    if (flipped > 0)
+        Log(GLLogStream::WARNING,
+            QString("FCVT input: flipped %1 zero-area triangles of '%2' into their neighbours (a fan "
+                    "over a polygon's straight corner; removing them would tear the surface)")
+                .arg(flipped)
+                .arg(layer.label())
+                .toStdString());
+    return mesh;
+}
+
 bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
                                   const RemeshInputs& inputs, vcg::CallBackPos* cb)
 {
@@ -664,7 +662,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     if (input == nullptr)
         return false;
 
-    fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
+    fieldcvt::TriMesh in = surfaceOf(*input);
     fieldcvt::RemeshParams run = params;
     if (run.fieldSource == fieldcvt::FieldSource::User) {
         // One vector per live vertex, in the order of toTriMesh.
@@ -855,7 +853,7 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
 
     if (cb != nullptr)
         cb(0, "checking the input");
-    const fieldcvt::TriMesh in = fcvt_plugin::toTriMesh(input->cm);
+    const fieldcvt::TriMesh in = surfaceOf(*input);
     fieldcvt::InputReport report;
     const fieldcvt::TriMesh clean = fieldcvt::prepareInput(in, report);
     if (report.cleanIndex.size() != in.vertices.size())
@@ -864,7 +862,10 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
                               " vertices");
     if (cb != nullptr)
         cb(10, "computing the 6-RoSy field");
-    const fieldcvt::DirectionField field = fieldcvt::computeField(clean, params);
+    // As the remeshing does: on the surface centred and scaled to unit cells (one per vertex).
+    const fieldcvt::TriMesh work =
+        fieldcvt::inFrame(clean, fieldcvt::workingFrame(clean, clean.vertexCount()));
+    const fieldcvt::DirectionField field = fieldcvt::computeField(work, params);
     if (field.directions.size() != clean.vertices.size())
         throw fieldcvt::Error("the field has " + std::to_string(field.directions.size()) +
                               " directions for " + std::to_string(clean.vertices.size()) +
@@ -872,7 +873,7 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
     if (cb != nullptr)
         cb(80, "finding singularities");
     const std::vector<fieldcvt::Singularity> singularities =
-        fieldcvt::findSingularities(clean, field);
+        fieldcvt::findSingularities(work, field);
 
     // Everything is computed: now change the document. The drawing layer is removed again if
     // filling it fails; the attribute is written last.

@@ -94,4 +94,7 @@ private:
     //! The current layer if it holds faces; otherwise nullptr, with errorMessage set.
     MeshModel* currentTriangleLayer(MeshDocument& md);
     void logReport(const fieldcvt::RemeshResult& result, const QString& layerName);
+    //! The layer's mesh for remeshing or a field (fcvt_plugin::toSurfaceMesh), with the
+    //! zero-area triangles it flipped logged.
+    fieldcvt::TriMesh surfaceOf(const MeshModel& layer);
 };

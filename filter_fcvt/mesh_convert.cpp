@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "triangulate.h"
 
 namespace fcvt_plugin {
 
@@ -39,6 +40,13 @@ fieldcvt::TriMesh toTriMesh(const CMeshO& in)
         }
         out.faces.push_back(tri);
     }
+    return out;
+}
+
+fieldcvt::TriMesh toSurfaceMesh(const CMeshO& in, int& flipped)
+{
+    fieldcvt::TriMesh out = toTriMesh(in);
+    flipped = fieldcvt::flipZeroAreaTriangles(out);
     return out;
 }
 

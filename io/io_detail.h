@@ -4,6 +4,7 @@
 #include "mesh_io.h"
 
 #include <string>
+#include <vector>
 
 namespace fieldcvt::io_detail {
 
@@ -12,6 +13,10 @@ namespace fieldcvt::io_detail {
 
 //! The whole file as bytes; throws IOError if it cannot be read.
 std::string readFileBytes(const std::string& path);
+//! Adds a face with corners `polygon` (indices of `mesh`'s vertices, read before it): a
+//! triangle as it is, a polygon triangulated without zero-area triangles (triangulate.h) and
+//! counted in `info`.
+void addPolygon(TriMesh& mesh, const std::vector<int>& polygon, MeshReadInfo& info);
 //! Writes `bytes` to `path` (replacing it); throws IOError on any failure.
 void writeFileBytes(const std::string& path, const std::string& bytes);
 

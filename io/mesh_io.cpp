@@ -4,6 +4,7 @@
 #include "errors.h"
 #include "io_detail.h"
 #include "mesh_format.h"
+#include "triangulate.h"
 
 #include <algorithm>
 #include <cctype>
@@ -27,6 +28,12 @@ std::string readFileBytes(const std::string& path)
     buffer << in.rdbuf();
     if (in.bad()) fail(path, "read error");
     return buffer.str();
+}
+
+void addPolygon(TriMesh& mesh, const std::vector<int>& polygon, MeshReadInfo& info)
+{
+    triangulatePolygon(mesh.vertices, polygon, mesh.faces);
+    if (polygon.size() > 3) ++info.polygonsTriangulated;
 }
 
 void writeFileBytes(const std::string& path, const std::string& bytes)

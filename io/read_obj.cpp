@@ -26,7 +26,7 @@ int cornerVertex(const TextScanner& scan, std::string_view corner, int vertexCou
 TriMesh readObj(const std::string& path, const std::string& text, MeshReadInfo& info)
 {
     TriMesh mesh;
-    TextScanner scan(path, text);
+    TextScanner scan(path, text, true);  // a line ending in a backslash goes on
     std::vector<int> polygon;
     while (scan.nextLine()) {
         const auto& t = scan.tokens();
@@ -39,9 +39,7 @@ TriMesh readObj(const std::string& path, const std::string& text, MeshReadInfo& 
             if (t.size() < 4) scan.fail("face with fewer than 3 corners");
             polygon.clear();
             for (std::size_t i = 1; i < t.size(); ++i) polygon.push_back(cornerVertex(scan, t[i], mesh.vertexCount()));
-            // Fan triangulation: exact for the convex quads and polygons exporters write.
-            for (std::size_t i = 1; i + 1 < polygon.size(); ++i) mesh.faces.push_back({polygon[0], polygon[i], polygon[i + 1]});
-            if (polygon.size() > 3) ++info.polygonsTriangulated;
+            addPolygon(mesh, polygon, info);
         }
         // vn, vt, g, o, s, usemtl, mtllib, l, p ... carry nothing the remesher uses.
     }

@@ -65,9 +65,7 @@ TriMesh readOff(const std::string& path, const std::string& text, MeshReadInfo& 
                 scan.fail("vertex index " + std::to_string(index) + " out of range (" + std::to_string(nv) + " vertices)");
             polygon.push_back(static_cast<int>(index));
         }
-        // Fan triangulation; anything after the indices is a face colour.
-        for (std::size_t i = 1; i + 1 < polygon.size(); ++i) mesh.faces.push_back({polygon[0], polygon[i], polygon[i + 1]});
-        if (corners > 3) ++info.polygonsTriangulated;
+        addPolygon(mesh, polygon, info);  // anything after the indices is a face colour
     }
     return mesh;
 }

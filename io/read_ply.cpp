@@ -79,6 +79,21 @@ public:
         return static_cast<double>(u);
     }
 
+    //! What is left after the last value read: non-blank lines (ASCII) or bytes (binary).
+    std::string leftover() const
+    {
+        if (encoding_ != Encoding::Ascii)
+            return pos_ < bytes_.size() ? std::to_string(bytes_.size() - pos_) + " bytes" : "";
+        int lines = 0;
+        bool blank = true;
+        for (std::size_t i = pos_; i < bytes_.size(); ++i) {
+            if (bytes_[i] == '\n') lines += !blank, blank = true;
+            else if (!std::isspace(static_cast<unsigned char>(bytes_[i]))) blank = false;
+        }
+        lines += !blank;
+        return lines > 0 ? std::to_string(lines) + " lines" : "";
+    }
+
 private:
     double asciiValue()
     {
@@ -98,20 +113,26 @@ private:
     Encoding encoding_;
 };
 
-//! Parses the header; returns the offset of the body.
+//! Parses the header, line by line up to the one that is "end_header" (the words may occur in
+//! a comment); returns the offset of the body.
 std::size_t parseHeader(const std::string& path, const std::string& bytes, Encoding& encoding, std::vector<Element>& elements)
 {
-    const std::size_t end = bytes.find("end_header");
-    if (bytes.compare(0, 3, "ply") != 0 || end == std::string::npos) fail(path, "not a PLY file (no 'ply' ... 'end_header' header)");
-    std::size_t body = bytes.find('\n', end);
-    body = body == std::string::npos ? bytes.size() : body + 1;
-    std::istringstream header(bytes.substr(0, end));
-    std::string line;
-    bool formatSeen = false;
-    while (std::getline(header, line)) {
+    std::size_t pos = byteOrderMarkLength(bytes);
+    auto notPly = [&] { fail(path, "not a PLY file (no 'ply' ... 'end_header' header)"); };
+    if (bytes.compare(pos, 3, "ply") != 0 || bytes.find("end_header") == std::string::npos) notPly();
+    bool formatSeen = false, ended = false;
+    while (!ended && pos < bytes.size()) {
+        std::size_t end = bytes.find('\n', pos);
+        if (end == std::string::npos) end = bytes.size();
+        const std::string line = bytes.substr(pos, end - pos);
+        pos = std::min(end + 1, bytes.size());
         std::istringstream words(line);
         std::string keyword;
         words >> keyword;
+        if (keyword == "end_header") {
+            ended = true;
+            continue;
+        }
         auto bad = [&] { fail(path, "malformed PLY header line '" + line.substr(0, line.find_last_not_of("\r") + 1) + "'"); };
         if (keyword == "format") {
             std::string format;
@@ -147,8 +168,9 @@ std::size_t parseHeader(const std::string& path, const std::string& bytes, Encod
             bad();
         }
     }
+    if (!ended) notPly();
     if (!formatSeen) fail(path, "PLY header has no format line");
-    return body;
+    return pos;
 }
 
 }  // namespace
@@ -230,8 +252,7 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                 }
                 if (static_cast<int>(i) != indexList) continue;
                 if (polygon.size() < 3) fail(path, "face " + std::to_string(n) + " has " + std::to_string(polygon.size()) + " corners");
-                for (std::size_t k = 1; k + 1 < polygon.size(); ++k) mesh.faces.push_back({polygon[0], polygon[k], polygon[k + 1]});
-                if (polygon.size() > 3) ++info.polygonsTriangulated;
+                addPolygon(mesh, polygon, info);
             }
             if (isVertex) {
                 mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
@@ -239,6 +260,12 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                     if (groups[g].use) groups[g].target->push_back(groupValue[g]);
             }
         }
+    }
+    // Never dropped unsaid: e.g. faces beyond the count the header declares.
+    if (const std::string rest = in.leftover(); !rest.empty()) {
+        std::string declared;
+        for (const Element& e : elements) declared += (declared.empty() ? "" : ", ") + std::to_string(e.count) + " " + e.name;
+        info.notes.push_back("PLY data goes on after the elements its header declares (" + declared + "): " + rest + " ignored");
     }
     return mesh;
 }

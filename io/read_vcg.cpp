@@ -1,9 +1,12 @@
-// STL: ASCII through vcglib's wrap/io_trimesh importer, with the checks vcglib 2020.09 lacks done
-// before the call; binary (a fixed 50-byte record) read here directly.
+// STL, read here (binary: a fixed 50-byte record; ASCII: a token parser) into a vcglib mesh that
+// is then welded. vcglib 2020.09's ASCII importer drops the last facet when the file ends right
+// after its "endfacet" (no newline, no "endsolid"), reads coordinates as float and loops forever
+// on a file without a line end; its binary one over-reads the label.
 #include "io_detail.h"
+#include "text_scan.h"
 #include "vcg_mesh.h"
 
-#include <wrap/io_trimesh/import_stl.h>
+#include <vcg/complex/allocate.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -51,8 +54,6 @@ TriMesh toTriMesh(const VcgMesh& m, MeshReadInfo& info)
     return mesh;
 }
 
-bool hasNewline(const std::string& bytes) { return bytes.find('\n') != std::string::npos; }
-
 //! Binary STL from its bytes (size already checked): vcglib's OpenBinary first runs
 //! IsSTLColored, which builds a string from an unterminated 80-byte label (a stack over-read).
 void readBinaryStl(const std::string& bytes, VcgMesh& m)
@@ -71,14 +72,70 @@ void readBinaryStl(const std::string& bytes, VcgMesh& m)
     }
 }
 
+//! ASCII STL: "solid NAME", then per facet "facet normal i j k / outer loop / vertex x y z (3
+//! times) / endloop / endfacet", then "endsolid NAME" (several solids may follow each other).
+//! Every facet is read whole or the file is refused naming its line; a missing final
+//! "endsolid" is noted, never a reason to drop a facet.
+void readAsciiStl(const std::string& path, const std::string& text, VcgMesh& m, MeshReadInfo& info)
+{
+    TextScanner scan(path, text);
+    std::size_t next = 0;  // the next token of the current line
+    bool inSolid = false;
+    auto token = [&](const char* expected) -> std::string_view {
+        if (next == scan.tokens().size()) {
+            if (!scan.nextLine()) fail(path, std::string("unexpected end of file: expected '") + expected + "' in facet " +
+                                                 std::to_string(m.face.size() + 1));
+            next = 0;
+        }
+        return scan.tokens()[next++];
+    };
+    auto keyword = [&](const char* expected) {
+        const std::string_view t = token(expected);
+        if (t != expected) scan.fail("expected '" + std::string(expected) + "', found '" + std::string(t) + "'");
+    };
+    for (;;) {
+        if (next == scan.tokens().size()) {
+            if (!scan.nextLine()) break;
+            next = 0;
+        }
+        const std::string_view t = scan.tokens()[next++];
+        if (t == "solid" || t == "endsolid") {  // the rest of the line is the solid's name
+            inSolid = t == "solid";
+            next = scan.tokens().size();
+            continue;
+        }
+        if (t != "facet") scan.fail("expected 'facet' or 'endsolid', found '" + std::string(t) + "'");
+        if (!inSolid) scan.fail("'facet' outside a solid");
+        keyword("normal");
+        for (int k = 0; k < 3; ++k) token("the facet normal");  // recomputed anyway
+        keyword("outer");
+        keyword("loop");
+        vcg::Point3d corner[3];
+        for (int c = 0; c < 3; ++c) {
+            keyword("vertex");
+            for (int k = 0; k < 3; ++k) corner[c][k] = scan.number(token("a vertex coordinate"));
+        }
+        keyword("endloop");
+        keyword("endfacet");
+        auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, 1);
+        auto vi = vcg::tri::Allocator<VcgMesh>::AddVertices(m, 3);
+        for (int c = 0; c < 3; ++c, ++vi) {
+            vi->P() = corner[c];
+            fi->V(c) = &*vi;
+        }
+    }
+    if (inSolid)
+        info.notes.push_back("ASCII STL ends without 'endsolid' (truncated?); its " + std::to_string(m.face.size()) +
+                             " complete facets were read");
+}
+
 }  // namespace
 
 TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo& info)
 {
     // We decide binary vs ASCII ourselves: vcglib's IsSTLBinary inspects 4 bytes it never read
     // (uninitialised) and so may call a valid ASCII file malformed. A binary file must have
-    // exactly the size its triangle count gives (else vcglib reads past the end), an ASCII one
-    // must have a line end (else vcglib loops forever skipping line 1).
+    // exactly the size its triangle count gives.
     constexpr std::size_t headerSize = 84, facetSize = 50;
     const bool binary = [&] {
         if (bytes.size() < headerSize) return false;
@@ -87,18 +144,15 @@ TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo&
         return bytes.size() == headerSize + facetSize * std::size_t(count);
     }();
     if (!binary) {
-        const std::size_t probe = std::min<std::size_t>(bytes.size(), 1080);
-        const bool ascii = std::all_of(bytes.begin(), bytes.begin() + probe, [](char c) { return static_cast<unsigned char>(c) < 128; });
+        const std::size_t start = byteOrderMarkLength(bytes), probe = std::min<std::size_t>(bytes.size(), 1080);
+        const bool ascii = std::all_of(bytes.begin() + start, bytes.begin() + std::max(start, probe),
+                                       [](char c) { return static_cast<unsigned char>(c) < 128; });
         if (!ascii) fail(path, "invalid binary STL file (its size does not match its triangle count: truncated?)");
-        if (bytes.compare(0, 5, "solid") != 0 || !hasNewline(bytes)) fail(path, "not an STL file (ASCII STL starts with 'solid')");
+        if (bytes.compare(start, 5, "solid") != 0) fail(path, "not an STL file (ASCII STL starts with 'solid')");
     }
-    using Importer = vcg::tri::io::ImporterSTL<VcgMesh>;
     VcgMesh m;
-    if (binary) {
-        readBinaryStl(bytes, m);
-    } else if (const int status = Importer::OpenAscii(m, path.c_str()); status != Importer::E_NOERROR) {
-        fail(path, std::string("invalid STL file: ") + Importer::ErrorMsg(status));
-    }
+    if (binary) readBinaryStl(bytes, m);
+    else readAsciiStl(path, bytes, m, info);
     return toTriMesh(m, info);
 }
 

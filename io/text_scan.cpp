@@ -25,16 +25,22 @@ bool parseNumber(std::string_view token, double& value)
     return ec == std::errc() && end == t.data() + t.size();
 }
 
+std::size_t byteOrderMarkLength(std::string_view text) { return text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; }
+
 bool TextScanner::nextLine()
 {
     tokens_.clear();
-    while (tokens_.empty() && pos_ < text_.size()) {
+    bool continued = false;
+    while ((tokens_.empty() || continued) && pos_ < text_.size()) {
         std::size_t end = text_.find('\n', pos_);
         if (end == std::string_view::npos) end = text_.size();
         std::string_view line = text_.substr(pos_, end - pos_);
         pos_ = end + 1;
         ++line_;
         line = line.substr(0, line.find('#'));
+        const std::size_t last = line.find_last_not_of(" \t\r\v\f");
+        continued = continuation_ && last != std::string_view::npos && line[last] == '\\';
+        if (continued) line = line.substr(0, last);
         std::size_t i = 0;
         while (i < line.size()) {
             while (i < line.size() && isSpace(line[i])) ++i;

@@ -10,11 +10,18 @@ namespace fieldcvt::io_detail {
 //! Strict, locale-independent: true if the whole token is one number (a leading '+' allowed).
 bool parseNumber(std::string_view token, double& value);
 
+//! 3 if `text` starts with a UTF-8 byte order mark (which some Windows editors write), else 0.
+std::size_t byteOrderMarkLength(std::string_view text);
+
 class TextScanner {
 public:
-    TextScanner(const std::string& path, std::string_view text) : path_(path), text_(text) {}
+    //! A leading byte order mark is skipped. With `continuation` (OBJ), a line ending in a
+    //! backslash goes on on the next line.
+    TextScanner(const std::string& path, std::string_view text, bool continuation = false)
+        : path_(path), text_(text), pos_(byteOrderMarkLength(text)), continuation_(continuation) {}
 
-    //! Moves to the next line that has at least one token; false at the end of the text.
+    //! Moves to the next line that has at least one token; false at the end of the text. The
+    //! line number is that of the line's last part when it was continued.
     bool nextLine();
     const std::vector<std::string_view>& tokens() const { return tokens_; }
     int lineNumber() const { return line_; }
@@ -30,6 +37,7 @@ private:
     const std::string& path_;
     std::string_view text_;
     std::size_t pos_ = 0;
+    bool continuation_ = false;
     int line_ = 0;
     std::vector<std::string_view> tokens_;
 };

@@ -70,13 +70,16 @@ add_test(NAME cli_determinism
 add_test(NAME cli_field_singularities
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_field.py $<TARGET_FILE:fcvt> ${FCVT_CLI_WORK}/field
           ${FCVT_RESOURCES}/torus.obj 0 ${FCVT_RESOURCES}/fertility.off -6)
+# Issue 14: the field and remesh at 1e-300 .. 1e300 scale (the normalised surface).
+add_test(NAME cli_field_scale
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_field_scale.py $<TARGET_FILE:fcvt> ${FCVT_CLI_WORK}/field_scale)
 add_test(NAME cli_remesh_field
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_remesh_field.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}
           ${FCVT_CLI_WORK}/remesh_field)
 add_test(NAME cli_compare_fertility_3000
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_compare.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 3000 300)
 
-set_tests_properties(cli_usage_errors cli_convert cli_metrics_json cli_field_singularities PROPERTIES LABELS "cli" TIMEOUT 600)
+set_tests_properties(cli_usage_errors cli_convert cli_metrics_json cli_field_singularities cli_field_scale PROPERTIES LABELS "cli" TIMEOUT 600)
 set_tests_properties(cli_remesh_field cli_compare_fertility_3000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
 set_tests_properties(cli_quality_fertility_3000 cli_quality_torus_1000 cli_quality_bunny_5000 cli_determinism
   PROPERTIES LABELS "cli;slow" TIMEOUT 1200)

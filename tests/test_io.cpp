@@ -294,6 +294,86 @@ TEST_F(IoTest, MissingEmptyAndUnknownFiles)
     expectIoError(path("dir.obj"), "directory");
 }
 
+// Issue 14: valid files that were refused or read short.
+TEST_F(IoTest, PlyCommentMentioningEndHeaderDoesNotEndTheHeader)
+{
+    const std::string header = plyHeader("ascii", 4, 2);
+    std::string ply = header;
+    ply.insert(ply.find("element"), "comment the words end_header in a comment\nobj_info end_header too\n");
+    expectSquare(readMesh(write("c.ply", ply + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")));
+}
+
+TEST_F(IoTest, PlyDataAfterTheDeclaredFacesIsReported)
+{
+    for (const bool binary : {false, true}) {
+        SCOPED_TRACE(binary ? "binary" : "ascii");
+        std::string ply = binary ? binarySquarePly() : plyHeader("ascii", 4, 2) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+        ply += binary ? std::string("\x03\0\0\0\0\x01\0\0\0\x02\0\0\0", 13) : "3 0 1 3\n\n3 1 2 3\n";
+        MeshReadInfo info;
+        expectSquare(readMesh(write("x.ply", ply), &info));
+        ASSERT_EQ(info.notes.size(), 1u);
+        EXPECT_NE(info.notes[0].find(binary ? "13 bytes ignored" : "2 lines ignored"), std::string::npos) << info.notes[0];
+        EXPECT_NE(info.notes[0].find("4 vertex, 2 face"), std::string::npos) << info.notes[0];
+    }
+}
+
+TEST_F(IoTest, ByteOrderMarkIsSkipped)
+{
+    const std::string bom = "\xEF\xBB\xBF";
+    expectSquare(readMesh(write("b.obj", bom + "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n")));
+    expectSquare(readMesh(write("b.off", bom + "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")));
+    expectSquare(readMesh(write("b.ply", bom + binarySquarePly())));
+    expectSquare(readMesh(write("b.stl", bom + asciiSquareStl)));
+}
+
+TEST_F(IoTest, ObjBackslashContinuesTheLine)
+{
+    expectSquare(readMesh(write("c.obj", "v 0 0 \\\n 0\nv 1 0 0\r\nv 1 1 0\nv 0 1 0\nf 1 2 \\ \r\n 3\nf 1\\\n3 4\n")));
+    expectIoError(write("d.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 \\\n"), "fewer than 3 corners");
+}
+
+TEST_F(IoTest, AsciiStlEndingRightAfterItsLastFacetKeepsIt)
+{
+    std::string stl = asciiSquareStl;
+    stl = stl.substr(0, stl.find("endsolid"));
+    stl.erase(stl.find_last_not_of("\n") + 1);  // "... endfacet" and nothing after it
+    MeshReadInfo info;
+    expectSquare(readMesh(write("n.stl", stl), &info));
+    ASSERT_EQ(info.notes.size(), 2u);
+    EXPECT_NE(info.notes[0].find("without 'endsolid'"), std::string::npos) << info.notes[0];
+    // Two solids in one file, and a facet cut short: every facet whole, or an error.
+    const std::string second = std::string(asciiSquareStl).replace(0, 12, "solid again");
+    EXPECT_EQ(readMesh(write("two.stl", std::string(asciiSquareStl) + second)).faceCount(), 4);
+    expectIoError(write("cut.stl", std::string(asciiSquareStl).substr(0, std::string(asciiSquareStl).rfind("endloop"))),
+                  "unexpected end of file");
+}
+
+TEST_F(IoTest, PolygonsWithStraightCornersGetNoZeroAreaTriangles)
+{
+    // A square face with a vertex on two of its edges (180-degree corners), as OBJ, OFF and PLY;
+    // the fan from corner 0 made (0, 1, 2) of zero area.
+    const std::string points = "0 0 0\n1 0 0\n2 0 0\n2 2 0\n1 2 0\n0 2 0\n";
+    std::string obj;
+    for (std::size_t i = 0; i < points.size();) {
+        const std::size_t end = points.find('\n', i);
+        obj += "v " + points.substr(i, end - i) + "\n";
+        i = end + 1;
+    }
+    for (const auto& file : {write("p.obj", obj + "f 1 2 3 4 5 6\n"), write("p.off", "OFF\n6 1 0\n" + points + "6 0 1 2 3 4 5\n"),
+                             write("p.ply", plyHeader("ascii", 6, 1) + points + "6 0 1 2 3 4 5\n")}) {
+        SCOPED_TRACE(file);
+        const TriMesh m = readMesh(file);
+        ASSERT_EQ(m.faceCount(), 4);
+        double area = 0;
+        for (int f = 0; f < m.faceCount(); ++f) {
+            EXPECT_GT(faceArea(m, f), 0.1) << "face " << f;
+            EXPECT_GT(faceNormal(m, f).z(), 0) << "face " << f;  // the polygon's orientation
+            area += faceArea(m, f);
+        }
+        EXPECT_DOUBLE_EQ(area, 4.0);
+    }
+}
+
 TEST_F(IoTest, BrokenObj)
 {
     expectIoError(write("g.obj", "\x7f" "ELF garbage \x01\x02\n"), "no faces");
@@ -340,7 +420,7 @@ TEST_F(IoTest, BrokenStl)
     expectIoError(write("l.stl", "solid but no line end"));
     const std::string ascii = asciiSquareStl;
     expectIoError(write("ta.stl", ascii.substr(0, ascii.find("vertex 1 1 0") + 9)));
-    expectIoError(write("g.stl", "solid x\nnothing useful here\n"), "no faces");
+    expectIoError(write("g.stl", "solid x\nnothing useful here\n"), "line 2: expected 'facet'");
 }
 
 struct BundledMesh {

@@ -8,7 +8,11 @@ the documented outcome of each:
 
 `meshlab` marks the well-formed OFF/PLY files MeshLab 2020.09's own importers load, run through
 meshlabserver too. `same_as` = (case, scale, offset): after undoing the transform the output
-must match that case's output."""
+must match that case's output. `closed`: the output (and, through MeshLab, the input the filter
+sees) is one closed component, no boundary loop. `warning`: a fragment stderr must have (a
+"fcvt: warning:" line). `early`: the error comes before any work (stderr is the error line
+alone, no progress line). `out_ext` "@input" writes to the input file itself, "@link" to a
+symbolic link to it; either must leave the input as it was."""
 import random
 
 import meshgen as g
@@ -17,10 +21,12 @@ import meshgen as g
 FAST = ["--vertices", "60", "--cvt-iterations", "5", "--fcvt-iterations", "0", "--lambda", "0"]
 
 
-def case(name, ext, data, expect, args=None, codes=(1,), fragment="", meshlab=False, same_as=None, out_ext="obj"):
+def case(name, ext, data, expect, args=None, codes=(1,), fragment="", meshlab=False, same_as=None, out_ext="obj",
+         closed=False, warning="", early=False):
     return {"name": name, "file": name + "." + ext if ext else None, "data": data, "expect": expect,
             "args": FAST if args is None else args, "codes": list(codes), "fragment": fragment,
-            "meshlab": meshlab, "same_as": same_as, "out_ext": out_ext}
+            "meshlab": meshlab, "same_as": same_as, "out_ext": out_ext, "closed": closed, "warning": warning,
+            "early": early}
 
 
 def truncate(data, fraction):
@@ -75,13 +81,20 @@ def cases():
     bad[5][1] = float("-inf")
     out.append(case("inf_ply_float", "ply", g.ply_bytes((bad, sphere[1]), True, "float"), "error",
                     fragment="non-finite", meshlab=True))
-    out.append(case("huge_coordinates", "ply", g.ply_bytes(g.transform(sphere, 1e300)), "either"))
+    # Remeshed on the normalised surface (issue 14): was refused ("the surface has no area").
+    out.append(case("huge_coordinates", "ply", g.ply_bytes(g.transform(sphere, 1e300)), "ok", closed=True))
 
     # Polygons: triangulated.
     cube = g.quad_cube(4)
     out.append(case("quads_obj", "obj", g.obj_bytes(cube), "ok"))
     out.append(case("quads_off", "off", g.off_bytes(cube), "ok", meshlab=True))
     out.append(case("quads_ply", "ply", g.ply_bytes(cube, False), "ok", meshlab=True))
+    # Polygons with straight corners (a vertex on the polygon's edge): a fan makes zero-area
+    # triangles whose removal tore the cube open (issue 14). MeshLab fans them itself.
+    pcube = g.polygon_cube(2)
+    out.append(case("polygon_cube_off", "off", g.off_bytes(pcube), "ok", meshlab=True, closed=True))
+    out.append(case("polygon_cube_ply", "ply", g.ply_bytes(pcube, False), "ok", meshlab=True, closed=True))
+    out.append(case("polygon_cube_obj", "obj", g.obj_bytes(pcube), "ok", closed=True))
 
     # Topology.
     out.append(case("nonmanifold_edge", "off", g.off_bytes(g.nonmanifold_edge()), "error",
@@ -117,6 +130,26 @@ def cases():
     out.append(case("scale_1e-6", "ply", g.ply_bytes(g.transform(sphere, 1e-6)), "ok",
                     meshlab=True, same_as=("unit_sphere", 1e-6, (0, 0, 0))))
 
+    # Scale (issue 14): huge and tiny models are remeshed on the normalised surface, with the
+    # field too. Through MeshLab (float coordinates) 1e30, 1e-30.
+    field = ["--vertices", "60", "--cvt-iterations", "3", "--fcvt-iterations", "3"]
+    for scale, meshlab in ((1e100, False), (1e-100, False), (1e155, False), (1e30, True), (1e-30, True)):
+        out.append(case("scale_%g" % scale, "ply", g.ply_bytes(g.transform(sphere, scale)), "ok", args=field,
+                        meshlab=meshlab, closed=True))
+
+    # Valid files our readers refused or read short (issue 14).
+    ply = g.ply_bytes(sphere, False).replace(b"format ascii 1.0\n", b"format ascii 1.0\ncomment no end_header here\n")
+    out.append(case("ply_comment_end_header", "ply", ply, "ok", closed=True))
+    out.append(case("obj_bom", "obj", b"\xef\xbb\xbf" + g.obj_bytes(sphere), "ok", closed=True))
+    obj = g.obj_bytes(sphere).replace(b"\nf ", b"\nf \\\n  ")
+    out.append(case("obj_backslash_continuation", "obj", obj, "ok", closed=True))
+    stl = g.stl_bytes(sphere, False)
+    out.append(case("stl_ascii_no_endsolid", "stl", stl[:stl.rindex(b"endsolid")].rstrip(b"\n"), "ok", closed=True,
+                    warning="endsolid"))
+    v, f = sphere
+    extra = g.ply_bytes((v, f[:-3]), False) + b"".join(b"3 %d %d %d\n" % tuple(t) for t in f[-3:])
+    out.append(case("ply_faces_after_count", "ply", extra, "either", warning="3 lines ignored"))
+
     # Parameters.
     def with_args(**over):
         a = dict(zip(FAST[0::2], FAST[1::2]))
@@ -130,6 +163,11 @@ def cases():
     out.append(case("vertices_1e9", "off", sphere_off, "error", args=with_args(vertices="1000000000"), codes=(1, 2),
                     fragment="vertices", meshlab=True))
     out.append(case("vertices_negative", "off", sphere_off, "error", args=with_args(vertices="-5"), codes=(2,)))
+    # One limit, one wording (issue 14): was "between 4 and 2147483647", then "at most 50000000".
+    out.append(case("vertices_6e6", "off", sphere_off, "error", args=with_args(vertices="6000000"), codes=(2,),
+                    fragment="between 4 and 5000000", meshlab=True, early=True))
+    out.append(case("target_length_tiny", "off", sphere_off, "error", args=["--target-length", "1e-6"] + FAST[2:],
+                    codes=(2,), fragment="between 4 and 5000000"))
     out.append(case("lambda_negative", "off", sphere_off, "error", args=with_args(lambda_="-1"), codes=(2,),
                     fragment="--lambda", meshlab=True))
     out.append(case("cvt_iterations_negative", "off", sphere_off, "error", args=with_args(cvt_iterations="-1"),
@@ -137,7 +175,6 @@ def cases():
     out.append(case("zero_iterations", "off", sphere_off, "ok", args=with_args(cvt_iterations="0")))
 
     # The field term on (default lambda and FCVT iterations) over repaired inputs.
-    field = ["--vertices", "60", "--cvt-iterations", "3", "--fcvt-iterations", "3"]
     out.append(case("field_on_nonmanifold_vertex", "off", g.off_bytes(g.two_cones_at_apex(12)), "ok", args=field))
     out.append(case("field_on_two_components", "off", g.off_bytes(g.combine(sphere, tiny)), "ok", args=field))
     out.append(case("field_on_open_grid", "obj", g.obj_bytes(g.grid(6)), "ok", args=field))
@@ -145,5 +182,14 @@ def cases():
     # Output side.
     for ext in ("ply", "off", "stl"):
         out.append(case("write_" + ext, "off", sphere_off, "ok", out_ext=ext))
-    out.append(case("unwritable_output", "off", sphere_off, "error", out_ext="/nonexistent-dir/out.obj"))
+    out.append(case("unwritable_output", "off", sphere_off, "error", out_ext="/nonexistent-dir/out.obj", early=True))
+    # Found before the work (issue 14), and the input never overwritten.
+    out.append(case("unwritable_proc", "off", sphere_off, "error", out_ext="/proc/x.ply", fragment="cannot write",
+                    early=True))
+    out.append(case("output_is_directory", "off", sphere_off, "error", out_ext="/proc", fragment="is a directory",
+                    early=True))
+    out.append(case("output_is_input", "off", sphere_off, "error", out_ext="@input", fragment="is the input",
+                    early=True))
+    out.append(case("output_is_link_to_input", "off", sphere_off, "error", out_ext="@link", fragment="is the input",
+                    early=True))
     return out

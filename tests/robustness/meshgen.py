@@ -41,6 +41,27 @@ def icosphere(levels=1, radius=1.0):
     return [[c * radius for c in p] for p in v], f
 
 
+def uv_sphere(rings=12, segments=24, radius=1.0):
+    """A closed UV sphere: two poles and rings x segments quads split into triangles."""
+    v = [[0.0, 0.0, radius]]
+    for i in range(1, rings):
+        t = math.pi * i / rings
+        v += [[radius * math.sin(t) * math.cos(2 * math.pi * j / segments),
+               radius * math.sin(t) * math.sin(2 * math.pi * j / segments), radius * math.cos(t)] for j in range(segments)]
+    v.append([0.0, 0.0, -radius])
+    south = len(v) - 1
+
+    def ring(i, j):
+        return 1 + (i - 1) * segments + j % segments
+
+    f = [[0, ring(1, j), ring(1, j + 1)] for j in range(segments)]
+    for i in range(1, rings - 1):
+        for j in range(segments):
+            f += [[ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)], [ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)]]
+    f += [[south, ring(rings - 1, j + 1), ring(rings - 1, j)] for j in range(segments)]
+    return v, f
+
+
 def torus(n=16, m=8, R=1.0, r=0.35):
     v = []
     for i in range(n):
@@ -102,6 +123,31 @@ def quad_cube(cells=4):
                         quad.append(vid(p))
                     f.append(quad if side == 1 else quad[::-1])
     return v, f
+
+
+def polygon_cube(cells=2):
+    """A closed cube whose six faces are single polygons of 4 * cells corners: the square's corners
+    and cells - 1 vertices on each of its edges (straight, 180-degree corners), shared with the
+    neighbouring faces. A fan from a polygon's first corner makes zero-area triangles here."""
+    v, quads = quad_cube(cells)
+    used = set()
+    f = []
+    for axis in range(3):
+        for side in (0, 1):
+            ring = []
+            # The border of this side's grid, walked once around (counter-clockwise from outside).
+            for i, j in ([(i, 0) for i in range(cells)] + [(cells, j) for j in range(cells)] +
+                         [(i, cells) for i in range(cells, 0, -1)] + [(0, j) for j in range(cells, 0, -1)]):
+                p = [0.0, 0.0, 0.0]
+                p[axis] = float(side)
+                p[(axis + 1) % 3] = i / cells
+                p[(axis + 2) % 3] = j / cells
+                ring.append(next(k for k, q in enumerate(v) if q == [c * 2 - 1 for c in p]))
+            f.append(ring if side == 1 else ring[::-1])
+            used.update(ring)
+    keep = sorted(used)
+    index = {old: new for new, old in enumerate(keep)}
+    return [v[k] for k in keep], [[index[c] for c in face] for face in f]
 
 
 def cone(apex, direction, k=10, apex_index=None, v=None, f=None):
@@ -272,6 +318,32 @@ def read_obj(path):
             elif parts[0] == "f":
                 f.append([int(p.split("/")[0]) - 1 for p in parts[1:]])
     return v, f
+
+
+def boundary_loops_and_components(mesh):
+    """(boundary loops, connected components through shared edges) of a manifold triangle mesh."""
+    v, f = mesh
+    edges = {}
+    for i, t in enumerate(f):
+        for k in range(3):
+            edges.setdefault((min(t[k], t[(k + 1) % 3]), max(t[k], t[(k + 1) % 3])), []).append(i)
+    parent = list(range(len(v)))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    border = [e for e, faces in edges.items() if len(faces) == 1]
+    for a, b in border:
+        parent[find(a)] = find(b)
+    loops = len({find(a) for a, _ in border})
+    parent = list(range(len(f)))
+    for faces in edges.values():
+        for other in faces[1:]:
+            parent[find(faces[0])] = find(other)
+    return loops, len({find(i) for i in range(len(f))})
 
 
 def manifold_problems(mesh):

@@ -25,7 +25,14 @@ def signal_name(code):
 def run_case(fcvt, work, c, timeout):
     """Returns (case, list of problems, output path)."""
     inp = os.path.join(work, "in", c["file"])
-    if c["out_ext"].startswith("/"):
+    if c["out_ext"] == "@input":
+        out = inp
+    elif c["out_ext"] == "@link":
+        out = os.path.join(work, "out", c["file"])
+        if os.path.lexists(out):
+            os.remove(out)
+        os.symlink(inp, out)
+    elif c["out_ext"].startswith("/"):
         out = c["out_ext"]
     else:
         out = os.path.join(work, "out", c["name"] + "." + c["out_ext"])
@@ -50,10 +57,17 @@ def run_case(fcvt, work, c, timeout):
         elif c["out_ext"] == "obj":
             mesh = meshgen.read_obj(out)
             problems += ["output: " + x for x in meshgen.manifold_problems(mesh)]
+            if c["closed"]:
+                loops, components = meshgen.boundary_loops_and_components(mesh)
+                if (loops, components) != (0, 1):
+                    problems.append("output has %d boundary loops and %d components, expected one closed surface"
+                                    % (loops, components))
         elif not os.path.getsize(out):
             problems.append("empty output file")
         if any(line.startswith("fcvt: error:") for line in lines):
             problems.append("exit 0 but an error line on stderr")
+        if c["warning"] and not any(line.startswith("fcvt: warning:") and c["warning"] in line for line in lines):
+            problems.append("no warning mentioning %r" % c["warning"])
     elif rc in (1, 2):
         errors = [line for line in lines if line.startswith("fcvt: error:")]
         if c["expect"] == "ok":
@@ -64,10 +78,16 @@ def run_case(fcvt, work, c, timeout):
             problems.append("stderr does not end with exactly one 'fcvt: error:' line")
         if c["fragment"] and c["fragment"] not in stderr:
             problems.append("error does not mention %r" % c["fragment"])
-        if c["out_ext"] != "" and not c["out_ext"].startswith("/") and os.path.exists(out):
+        if c["out_ext"] != "" and not c["out_ext"].startswith(("/", "@")) and os.path.exists(out):
             problems.append("an output file was written despite the error")
+        if c["early"] and len(lines) != 1:
+            problems.append("the error did not come before the work (%d stderr lines)" % len(lines))
     else:
         problems.append("unexpected exit code %d" % rc)
+    if c["out_ext"].startswith("@"):
+        with open(inp, "rb") as fh:
+            if fh.read() != c["data"]:
+                problems.append("the input file was changed")
     if problems:
         problems.append("command: " + " ".join(cmd))
         problems.append("stderr: " + stderr[-800:])

@@ -60,6 +60,11 @@ def run_case(server, work, template, c, timeout):
         # The CLI's option names aside, the filter reports the same message as the CLI.
         if c["expect"] == "error" and c["fragment"] and not c["fragment"].startswith("--") and c["fragment"] not in stdout:
             problems.append("the log does not mention %r" % c["fragment"])
+        # What MeshLab's importer made of the file must reach the core as one closed surface
+        # (its polygon fans' zero-area triangles flipped, not removed), and so must the output.
+        closed = r"FCVT topology: input genus \d+, 0 boundary loops, 1 components; output genus \d+, 0 boundary loops, 1 components"
+        if c["expect"] == "ok" and c["closed"] and not re.search(closed, stdout):
+            problems.append("the log does not show a closed input and output (one component, no boundary loop)")
     # The filter's last own message (its progress lines run together without newlines).
     said = [line.strip() for line in stdout.splitlines() if re.search(r"FCVT( metrics)?: ", line) and len(line) < 400]
     print("%-32s exit %-4d %s" % (c["name"], rc, (said[-1] if said else "")[:140]), flush=True)
