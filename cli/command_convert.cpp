@@ -49,7 +49,7 @@ int runConvert(const std::vector<std::string>& args)
     const std::string& inPath = files[0];
     const std::string& outPath = files[1];
     const bool quiet = a.flag("quiet");
-    checkOutputPath(outPath);
+    checkOutputPath(outPath, inPath);
 
     MeshReadInfo readInfo;
     VertexAttributes attributes;
