@@ -1,6 +1,8 @@
 #pragma once
 // Small procedural meshes for unit tests, and the path of the bundled ones.
+#include "errors.h"
 #include "mesh.h"
+#include "mesh_check.h"
 
 #include <cmath>
 #include <map>
@@ -10,6 +12,18 @@
 namespace fieldcvt::testmesh {
 
 inline std::string resource(const std::string& name) { return std::string(FCVT_RESOURCES_DIR) + "/" + name; }
+
+//! The strict input check's refusal of `mesh` (prepareInput's message), "" if it passes.
+inline std::string inputError(const TriMesh& mesh)
+{
+    InputReport report;
+    try {
+        prepareInput(mesh, report);
+    } catch (const InvalidInputError& e) {
+        return e.what();
+    }
+    return "";
+}
 
 //! Planar grid over [0, size]^2 (z = 0), `cells` x `cells` squares split into two triangles.
 inline TriMesh planeGrid(int cells, double size = 1.0)
