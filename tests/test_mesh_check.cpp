@@ -217,22 +217,7 @@ TEST(MeshCheck, OrientsEachComponentOnItsOwn)
 
 TEST(MeshCheck, RejectsMoebiusStrip)
 {
-    const double pi = 3.14159265358979323846;
-    const int n = 24;
-    TriMesh m;
-    for (int i = 0; i < n; ++i) {
-        const double u = 2 * pi * i / n;
-        for (double s : {-0.3, 0.3})
-            m.vertices.emplace_back((1 + s * std::cos(u / 2)) * std::cos(u), (1 + s * std::cos(u / 2)) * std::sin(u),
-                                    s * std::sin(u / 2));
-    }
-    // Vertex 2i is the -s rail, 2i + 1 the +s rail; after a full turn the rails swap.
-    for (int i = 0; i < n; ++i) {
-        const int a = 2 * i, b = 2 * i + 1;
-        const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
-        m.faces.push_back({a, c, d});
-        m.faces.push_back({a, d, b});
-    }
+    const TriMesh m = testmesh::moebius();
     const std::string error = testmesh::inputError(m);
     EXPECT_NE(error.find("not orientable"), std::string::npos) << error;
     EXPECT_NE(error.find("Moebius"), std::string::npos) << error;

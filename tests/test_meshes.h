@@ -25,6 +25,27 @@ inline std::string inputError(const TriMesh& mesh)
     return "";
 }
 
+//! A Moebius band (the one of tests/robustness/meshgen.py): n quads between two rails; vertex 2i
+//! is the -width rail, 2i + 1 the +width rail, and after a full turn the rails swap.
+inline TriMesh moebius(int n = 24, double width = 0.3)
+{
+    const double pi = 3.14159265358979323846;
+    TriMesh m;
+    for (int i = 0; i < n; ++i) {
+        const double u = 2 * pi * i / n;
+        for (double s : {-width, width})
+            m.vertices.emplace_back((1 + s * std::cos(u / 2)) * std::cos(u), (1 + s * std::cos(u / 2)) * std::sin(u),
+                                    s * std::sin(u / 2));
+    }
+    for (int i = 0; i < n; ++i) {
+        const int a = 2 * i, b = 2 * i + 1;
+        const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+        m.faces.push_back({a, c, d});
+        m.faces.push_back({a, d, b});
+    }
+    return m;
+}
+
 //! Planar grid over [0, size]^2 (z = 0), `cells` x `cells` squares split into two triangles.
 inline TriMesh planeGrid(int cells, double size = 1.0)
 {

@@ -34,25 +34,6 @@ TriMesh moved(TriMesh m, double scale, const Vec3& offset)
     return m;
 }
 
-// The Moebius band of tests/robustness/meshgen.py: two rows of vertices, the ends glued reversed.
-TriMesh moebius(int n = 24, double width = 0.3)
-{
-    TriMesh m;
-    for (int i = 0; i < n; ++i) {
-        const double u = 2 * M_PI * i / n;
-        for (double s : {-width, width})
-            m.vertices.emplace_back((1 + s * std::cos(u / 2)) * std::cos(u), (1 + s * std::cos(u / 2)) * std::sin(u),
-                                    s * std::sin(u / 2));
-    }
-    for (int i = 0; i < n; ++i) {
-        const int a = 2 * i, b = 2 * i + 1;
-        const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
-        m.faces.push_back({a, c, d});
-        m.faces.push_back({a, d, b});
-    }
-    return m;
-}
-
 // Repairs, then the strict check; the clean surface must be manifold and oriented.
 struct Repaired {
     RepairReport repair;
@@ -166,7 +147,7 @@ TEST(Repair, TwoShellsSharingAnEdgeStayTwoClosedShells)
 
 TEST(Repair, MoebiusBandAmongOtherComponentsIsCutIntoAnOrientablePiece)
 {
-    const TriMesh m = combine(combine(testmesh::icosphere(1), moved(moebius(), 1, {4, 0, 0})),
+    const TriMesh m = combine(combine(testmesh::icosphere(1), moved(testmesh::moebius(), 1, {4, 0, 0})),
                               moved(testmesh::torus(12, 6), 1, {-4, 0, 0}));
     EXPECT_NE(testmesh::inputError(m).find("not orientable"), std::string::npos);
     const Repaired r = repairOf(m);
