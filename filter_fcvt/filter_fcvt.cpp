@@ -297,7 +297,9 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
         return "Isotropic remeshing into a new layer: a Centroidal Voronoi Tessellation restricted to "
                "the surface, its edges aligned to a 6-RoSy direction field (Field weight &gt; 0), "
                "then valence optimisation. Quality metrics and stage times go to the log. See "
-               "<b>\"Field-Aligned Isotropic Surface Remeshing\"</b>, Computer Graphics Forum.";
+               "<b>\"Field-Aligned Isotropic Surface Remeshing\"</b>, Computer Graphics Forum. "
+               "<i>Repair the input</i> (on) first welds seams, removes duplicate faces and splits "
+               "non-manifold edges and non-orientable pieces (its tooltip says what, the log counts it).";
     case FP_FCVT_FIELD:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
@@ -439,6 +441,13 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
         par.addParam(RichBool(kFeatureSelection, false, parameterLabel(kFeatureSelection),
                               "Also treat the border of the input's face selection (edges between a "
                               "selected and an unselected face) as feature lines."));
+        par.addParam(RichBool(kRepair, defaults.repair, parameterLabel(kRepair),
+                              "Before remeshing, weld coincident and nearly coincident border "
+                              "vertices (cracks, seams, T-junctions), remove duplicate and opposite "
+                              "faces, split non-manifold edges and vertices, cut non-orientable "
+                              "pieces along a seam, and drop components too small for the vertex "
+                              "count; each step is counted in the log. Off: the strict check only, "
+                              "which refuses non-manifold edges and non-orientable pieces."));
         break;
     }
     case FP_FCVT_FIELD: {
@@ -592,6 +601,7 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
     inputs.densityFromQuality = density == kDensityVertexQuality;
     inputs.featuresFromSelection = boolParam(par, kFeatureSelection, false);
     inputs.colorIrregular = boolParam(par, kColorIrregular, false);
+    params.repair = boolParam(par, kRepair, defaults.repair);
     return remeshFcvt(md, params, inputs, cb);
 }
 
@@ -829,6 +839,9 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     } else {
         logInfo("FCVT valence optimisation: off");
     }
+    logInfo(run.repair ? QString("FCVT repair: %1 (the counts are in the warnings)")
+                             .arg(result.repair.notes.empty() ? "nothing to repair" : "done")
+                       : QString("FCVT repair: off (strict input check)"));
     logInfo(QString("FCVT size: mean edge length %1 (%2 vertices)")
             .arg(num(meanEdgeLength(result.mesh)))
             .arg(result.mesh.vertexCount()));

@@ -42,6 +42,7 @@ constexpr ParameterLabel kParameterLabels[] = {
     {"cvtIterations", "CVT iterations"},
     {"fcvtIterations", "FCVT iterations"},
     {"seed", "Random seed"},
+    {"repair", "Repair the input"},
     {"referenceLayer", "Reference layer (distances)"},
     {"maxCrosses", "Crosses drawn (at most)"},
 };

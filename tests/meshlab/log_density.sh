@@ -7,10 +7,10 @@
 #    the index sum explained; the bunny's boundary figures given; the curvature run's edge lengths
 #    follow the curvature density (tests/cli/check_adaptive.py on the saved layer).
 # B. tests/meshlab/fcvt-remesh-13params.mlx, the script as shipped before issue 15 (13 parameters
-#    in the old order, adaptive a RichBool), plus gradation at its end: it runs, its values are
+#    in the old order, adaptive a RichBool), plus gradation and repair at its end: it runs, its values are
 #    used by name (valenceOptimization false: "off"; 300 vertices), the closed torus gets no
 #    boundary figures and no "n/a"; with adaptive true it asks for the vertex quality (true =
-#    'vertex quality'). Without gradation meshlabserver 2020.09 aborts on its own assertion
+#    'vertex quality'). Without them meshlabserver 2020.09 aborts on its own assertion
 #    (every parameter must be in a script): reported, not failed on.
 # C. Error messages name the dialog's labels: lambda -1.
 # Usage: log_density.sh SOURCE_DIR PLUGIN_SO WORK_DIR FCVT_CLI
@@ -22,8 +22,9 @@ rm -rf "$work/out"; mkdir -p "$work/out"
 server="$(stage_meshlab "$work/stage" "$plugin")"
 shipped="$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx"
 old="$FCVT_SOURCE_DIR/tests/meshlab/fcvt-remesh-13params.mlx"
-gradation_line="$(grep 'name="gradation"' "$shipped")"
-[ -n "$gradation_line" ] || fail "no gradation in $shipped"
+# The parameters added after that script (gradation, repair): meshlabserver needs every one.
+added_lines="$(grep 'name="gradation"\|name="repair"' "$shipped")"
+[ "$(grep -c . <<<"$added_lines")" -eq 2 ] || fail "no gradation and repair in $shipped"
 
 # filter_body MLX NAME=VALUE...: the <filter> element of MLX with those values.
 filter_body() {
@@ -74,11 +75,11 @@ python3 "$FCVT_SOURCE_DIR/tests/cli/check_adaptive.py" "$cli" "$FCVT_SOURCE_DIR/
 
 # B.
 "$FCVT_SOURCE_DIR/tests/meshlab/obj2off.sh" "$FCVT_SOURCE_DIR/resources/torus.obj" "$work/out/torus.off"
-old_script() {  # OUT [with-gradation] NAME=VALUE...
+old_script() {  # OUT with-added(yes|no) NAME=VALUE...
   local out="$1" grad="$2"; shift 2
   { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
     filter_body "$old" vertexCount=300 cvtIterations=10 fcvtIterations=10 "$@" | sed '/<\/filter>/d'
-    [ "$grad" = yes ] && echo "$gradation_line"
+    [ "$grad" = yes ] && echo "$added_lines"
     echo ' </filter>'; echo '</FilterScript>'; } > "$out"
 }
 old_script "$work/out/old.mlx" yes valenceOptimization=false
