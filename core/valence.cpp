@@ -1050,7 +1050,24 @@ void ValenceOptimizer::relax()
         }
     };
     allFaceSags(faceSagStart);
-    std::vector<double> faceSagNow(faces_.size());
+    // The check only asks whether a face's sag exceeds its limit. The distance to the surface is
+    // 1-Lipschitz and a face's sag points (centroid, edge midpoints) move by at most the largest
+    // move of its corners, so a face's last measured sag plus that move bounds its sag now: when
+    // the bound is under the limit (less a rounding margin) the queries are skipped and the answer
+    // is the one they would give. Per face: the last measured sag and its corners then.
+    std::vector<double> sagMeasured(faceSagStart);
+    std::vector<std::array<Vec3, 3>> sagCorners(faces_.size());
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
+        if (faceAlive_[f]) sagCorners[f] = {pos_[faces_[f][0]], pos_[faces_[f][1]], pos_[faces_[f][2]]};
+    auto sagExceeds = [&](int f, double limit) {
+        const Face& t = faces_[f];
+        double moved = 0;
+        for (int k = 0; k < 3; ++k) moved = std::max(moved, (pos_[t[k]] - sagCorners[f][k]).norm());
+        if (sagMeasured[f] + moved <= limit * (1 - 1e-9)) return false;
+        sagMeasured[f] = faceSag(f);
+        sagCorners[f] = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
+        return sagMeasured[f] > limit;
+    };
     auto faceMeasures = [&](int f, double& angle, double& dot) {
         const Face& t = faces_[f];
         angle = smallestAngle(pos_[t[0]], pos_[t[1]], pos_[t[2]]);
@@ -1138,8 +1155,7 @@ void ValenceOptimizer::relax()
         for (int f = 0; f < faceCount; ++f)
             if (faceAlive_[f]) check.push_back(f);
         std::vector<char> wrong(faceCount);
-        allFaceSags(faceSagNow);  // the first pass checks every face
-        for (bool firstPass = true;; firstPass = false) {
+        for (;;) {
 #pragma omp parallel for schedule(static)
             for (int k = 0; k < static_cast<int>(check.size()); ++k) {
                 const int f = check[k];
@@ -1147,8 +1163,7 @@ void ValenceOptimizer::relax()
                 faceMeasures(f, angle, dot);
                 const bool folded = dot < std::min(kMinNormalDot, faceDotBefore[f]);
                 const bool sharper = angle < minAngle && angle < faceAngleBefore[f] - 1e-9;
-                const double sag = firstPass ? faceSagNow[f] : faceSag(f);
-                const bool offSurface = sag > std::max(kRelaxSagGrowth * faceSagStart[f], maxSag);
+                const bool offSurface = sagExceeds(f, std::max(kRelaxSagGrowth * faceSagStart[f], maxSag));
                 wrong[f] = folded || sharper || offSurface;
             }
             std::vector<int> revert;
