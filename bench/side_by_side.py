@@ -2,7 +2,7 @@
 """FCVT and Instant Meshes side by side on the same inputs, one after the other (issue 12).
 
   bench/side_by_side.py BUILD/cli/fcvt [--im PATH] [--threads T] [--repeat K] [--peak]
-                        [--fcvt-option OPT ...] [MESH:N ...]
+                        [--fcvt-option OPT ...] [--baseline OLD/cli/fcvt] [MESH:N ...]
 
 Each row: the whole `fcvt remesh IN OUT.ply --vertices N --threads T --quiet --report R.json`
 command, timed from start to exit (I/O included), then the whole `instant-meshes IN.obj -o OUT.obj
@@ -11,6 +11,10 @@ With --repeat K both run K times, alternately, and the medians are printed. Both
 measured by the same code, `fcvt metrics OUT --ref IN` (Q_avg, θ_min, %θ<30°, V6%, d_H in % of
 the diagonal, boundary loops). FCVT's per-stage times come from its report (last run). --peak adds
 each command's peak resident memory (from wait4).
+
+--baseline runs a second fcvt build (e.g. before a change) in the same rounds, with the same
+options, and adds its time and new/baseline (its output bytes must not differ for a change that
+keeps the results: "same" or "differs" says which).
 
 Instant Meshes is looked for at --im, else $FCVT_INSTANT_MESHES, else ../shared/anchors/instant-meshes
 next to the source tree. When it is absent, FCVT's rows are printed alone and the output says so.
@@ -105,6 +109,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--peak", action="store_true", help="also print each command's peak resident memory")
     ap.add_argument("--fcvt-option", action="append", default=[], help="extra option for fcvt remesh (repeatable)")
+    ap.add_argument("--baseline", help="a second fcvt build, timed in the same rounds")
     a = ap.parse_args()
     im = find_im(a.im)
     rows = a.rows or DEFAULT_ROWS
@@ -114,7 +119,8 @@ def main():
     print("quality: Q_avg / θ_min / %θ<30° / V6% / d_H % / boundary loops, both by `fcvt metrics OUT --ref IN`;"
           " stages: FCVT's report (s)")
     print()
-    head = "| mesh, N | FCVT s | " + ("IM s | FCVT / IM | " if im else "")
+    head = "| mesh, N | FCVT s | " + ("baseline s | FCVT / baseline | output | " if a.baseline else "")
+    head += ("IM s | FCVT / IM | " if im else "")
     head += ("FCVT MB | " + ("IM MB | " if im else "")) if a.peak else ""
     head += "FCVT quality | " + ("IM quality | " if im else "") + "FCVT stages | evals |"
     print(head)
@@ -135,10 +141,16 @@ def main():
                     im_in = os.path.join(work, "in.obj")
                     off_to_obj(path, im_in)
                 im_cmd = [im, im_in, "-o", out_i, "-r", "6", "-p", "6", "-v", n, "-d", "-t", str(a.threads)]
-            tf, ti, mf, mi = [], [], [], []
+            out_b = os.path.join(work, "baseline.ply")
+            base_cmd = [a.baseline] + fcvt_cmd[1:3] + [out_b] + fcvt_cmd[4:] if a.baseline else None
+            if base_cmd:
+                base_cmd[base_cmd.index("--report") + 1] = os.path.join(work, "baseline.json")
+            tf, ti, tb, mf, mi = [], [], [], [], []
             for _ in range(a.repeat):
                 s, mb = timed(fcvt_cmd)
                 tf.append(s), mf.append(mb)
+                if base_cmd:
+                    tb.append(timed(base_cmd)[0])
                 if im:
                     s, mb = timed(im_cmd)
                     ti.append(s), mi.append(mb)
@@ -147,6 +159,11 @@ def main():
             stages = " ".join(f"{k} {v:.2f}" for k, v in r["time_s"].items()
                               if k not in ("total", "prepare", "sampling", "features") and v >= 0.005)
             line = f"| {name} {n} | {statistics.median(tf):.2f} | "
+            if base_cmd:
+                with open(out_f, "rb") as f1, open(out_b, "rb") as f2:
+                    same = f1.read() == f2.read()
+                line += (f"{statistics.median(tb):.2f} | {statistics.median(tf) / statistics.median(tb):.2f} | "
+                         f"{'same' if same else 'differs'} | ")
             if im:
                 ratio = statistics.median(tf) / statistics.median(ti)
                 ratios.append(ratio)
