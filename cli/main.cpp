@@ -65,8 +65,10 @@ int run(const std::vector<std::string>& args)
 //! main, so the first start sets the variable and runs the same program again. Measured (issue
 //! 12, a shared 2-core machine, 2 threads, medians of 3 whole commands side by side): torus 1000
 //! 14.8 s spinning against 3.4 s passive and 4.5 s on one thread; fertility 3000 26.0 / 10.2 /
-//! 16.0 s (GOMP_SPINCOUNT 10 000: 3.0 and 13.7 s). A spinning thread holds its core while the
-//! other one waits for a time slice at every barrier; the outputs are the same bytes.
+//! 16.0 s (another run, torus / fertility: passive 1.9 / 8.7 s, GOMP_SPINCOUNT=10000 3.0 /
+//! 13.7 s). A spinning
+//! thread holds its core while the other one waits for a time slice at every barrier; the
+//! outputs are the same bytes.
 void sleepWhileWaiting(char** argv)
 {
     if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
