@@ -117,11 +117,15 @@ struct DenseSetup {
     }
 };
 
-const DenseSetup& dense()
+//! One setup per process, built on first use (outside the timed loops).
+template <class Setup>
+const Setup& shared()
 {
-    static const DenseSetup setup;
+    static const Setup setup;
     return setup;
 }
+
+const DenseSetup& dense() { return shared<DenseSetup>(); }
 
 // One CVT evaluation (RVD without edges), as in the Lloyd and CVT stages.
 void BM_CvtEvaluationDense(benchmark::State& state)
@@ -206,11 +210,7 @@ struct FertilitySetup {
     }
 };
 
-const FertilitySetup& fertility3000()
-{
-    static const FertilitySetup setup;
-    return setup;
-}
+const FertilitySetup& fertility3000() { return shared<FertilitySetup>(); }
 
 // The valence optimisation (operations, then the relaxation) with its default parameters.
 void BM_ValenceFertility3000(benchmark::State& state)
