@@ -7,6 +7,8 @@
 #include "optimize.h"
 #include "rdt.h"
 #include "field.h"
+#include "metrics.h"
+#include "valence.h"
 #include "closest_point.h"
 #include "remesh.h"
 #include "rvd.h"
@@ -115,11 +117,15 @@ struct DenseSetup {
     }
 };
 
-const DenseSetup& dense()
+//! One setup per process, built on first use (outside the timed loops).
+template <class Setup>
+const Setup& shared()
 {
-    static const DenseSetup setup;
+    static const Setup setup;
     return setup;
 }
+
+const DenseSetup& dense() { return shared<DenseSetup>(); }
 
 // One CVT evaluation (RVD without edges), as in the Lloyd and CVT stages.
 void BM_CvtEvaluationDense(benchmark::State& state)
@@ -179,6 +185,60 @@ void BM_RdtDense(benchmark::State& state)
     }
 }
 BENCHMARK(BM_RdtDense)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The stages after the optimisation, on the mesh they see in a default run: fertility.off at
+// 3000 samples (10 Lloyd steps, 30 CVT iterations), its RDT, the extrinsic field.
+struct FertilitySetup {
+    TriMesh surface;
+    DirectionField field;
+    TriMesh rdt;
+    FertilitySetup()
+    {
+        InputReport report;
+        surface = prepareInput(readMesh(std::string(FCVT_RESOURCES_DIR) + "/fertility.off"), report);
+        const double scale = std::sqrt(3000 / surfaceArea(surface));
+        for (Vec3& p : surface.vertices) p *= scale;
+        std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 3000, 1);
+        EnergyFunction energy(surface);
+        lloydRelaxation(energy, surface, seeds, 10, 1);
+        minimizeLbfgs(energy, seeds, LbfgsParams{30});
+        field = computeField(surface, FieldParams{});
+        ClosestPointTree tree(surface);
+        RvdOptions options;
+        options.triangles = true;
+        rdt = extractRdt(seeds, energy.diagram(seeds, options), tree).mesh;
+    }
+};
+
+const FertilitySetup& fertility3000() { return shared<FertilitySetup>(); }
+
+// The valence optimisation (operations, then the relaxation) with its default parameters.
+void BM_ValenceFertility3000(benchmark::State& state)
+{
+    const FertilitySetup& setup = fertility3000();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    ClosestPointTree tree(setup.surface);
+    const ValenceSurface on{setup.surface, tree, {}, &setup.field};
+    for (auto _ : state) {
+        TriMesh mesh = setup.rdt;
+        std::vector<VertexRole> roles(mesh.vertices.size(), VertexRole::Free);
+        benchmark::DoNotOptimize(optimizeValence(mesh, roles, on, ValenceParams{}).v6After);
+    }
+}
+BENCHMARK(BM_ValenceFertility3000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// d_RMS / d_H of the metrics stage: threads, random samples per mesh (the report's 50 000 =
+// RemeshParams::distanceSamples, against the dense 200 000 it took before and `fcvt metrics` takes).
+void BM_DistanceFertility3000(benchmark::State& state)
+{
+    const FertilitySetup& setup = fertility3000();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    const int samples = static_cast<int>(state.range(1));
+    for (auto _ : state) benchmark::DoNotOptimize(computeDistance(setup.rdt, setup.surface, samples).hausdorff);
+}
+BENCHMARK(BM_DistanceFertility3000)
+    ->Args({1, 200000})->Args({1, 50000})->Args({2, 200000})->Args({2, 50000})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_RemeshBunny5000(benchmark::State& state)
 {

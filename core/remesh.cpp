@@ -45,6 +45,7 @@ void validate(const RemeshParams& p)
     if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
         throw InvalidInputError("iteration counts must be >= 0");
     if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
+    if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");
     if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds)) throw InvalidInputError("time limit must be >= 0 seconds");
     if (!(p.featureAngleDegrees >= 0 && p.featureAngleDegrees <= 180))
         throw InvalidInputError("feature angle must be between 0 and 180 degrees (0 = no sharp features)");
@@ -327,8 +328,10 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         result.metrics = computeQuality(result.mesh);
         if (params.computeDistances && !result.mesh.faces.empty()) {
             const TriMesh& reference = surface;
-            // Dense enough for a Hausdorff figure at the meshes' resolution, capped for big ones.
-            const int samples = std::clamp(20 * (result.mesh.faceCount() + reference.faceCount()), 20000, 200000);
+            // A fixed budget (RemeshParams::distanceSamples), or dense enough for a Hausdorff
+            // figure at the meshes' resolution, capped for big ones.
+            const int samples = params.distanceSamples > 0 ? params.distanceSamples
+                                : std::clamp(20 * (result.mesh.faceCount() + reference.faceCount()), 20000, 200000);
             const DistanceMetrics d = computeDistance(result.mesh, reference, samples);
             result.metrics.dRms = d.rms;
             result.metrics.dH = d.hausdorff;

@@ -1,5 +1,7 @@
 #include "valence.h"
 
+#include "mesh_edges.h"
+
 #include "energy.h"
 #include "errors.h"
 #include "interpolation.h"
@@ -1015,9 +1017,57 @@ void ValenceOptimizer::relax()
     std::vector<Vec3> oldNormal;
     std::vector<double> faceAngleBefore(faces_.size()), faceDotBefore(faces_.size()), faceSagStart(faces_.size());
     // The connectivity is fixed: each face's sag is compared with its own at the start.
-#pragma omp parallel for schedule(static)
+    // faceSag of every face at once: each edge's midpoint is queried once for its two faces
+    // (2.5 closest-point queries per face instead of 4; the same figures, bit for bit).
+    std::vector<Face> liveFaces;
+    std::vector<int> liveFace(faces_.size(), -1);
     for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
-        if (faceAlive_[f]) faceSagStart[f] = faceSag(f);
+        if (faceAlive_[f]) liveFace[f] = static_cast<int>(liveFaces.size()), liveFaces.push_back(faces_[f]);
+    const EdgeTable liveEdges = buildEdgeTable(liveFaces, n);
+    std::vector<double> edgeSag(liveEdges.edgeCount()), centroidSag(liveFaces.size());
+    auto allFaceSags = [&](std::vector<double>& sag) {
+#pragma omp parallel for schedule(static)
+        for (int e = 0; e < liveEdges.edgeCount(); ++e) {
+            // The midpoint as faceSag computes it for the edge's first face (the sum commutes, so
+            // its other face gets the same point).
+            const int h = liveEdges.halfEdge(e, 0);
+            const Face& t = liveFaces[h / 3];
+            const int k = h % 3;
+            const Vec3 m = 0.5 * (pos_[t[k]] + pos_[t[(k + 1) % 3]]);
+            edgeSag[e] = (surface_.tree.closest(m, closest_[t[k]].face).point - m).norm();
+        }
+#pragma omp parallel for schedule(static)
+        for (int g = 0; g < static_cast<int>(liveFaces.size()); ++g) {
+            const Face& t = liveFaces[g];
+            const Vec3 c = (pos_[t[0]] + pos_[t[1]] + pos_[t[2]]) / 3.0;
+            centroidSag[g] = (surface_.tree.closest(c, closest_[t[0]].face).point - c).norm();
+        }
+        for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
+            const int g = liveFace[f];
+            if (g < 0) continue;
+            sag[f] = std::max({centroidSag[g], edgeSag[liveEdges.edgeOf(g, 0)], edgeSag[liveEdges.edgeOf(g, 1)],
+                               edgeSag[liveEdges.edgeOf(g, 2)]});
+        }
+    };
+    allFaceSags(faceSagStart);
+    // The check only asks whether a face's sag exceeds its limit. The distance to the surface is
+    // 1-Lipschitz and a face's sag points (centroid, edge midpoints) move by at most the largest
+    // move of its corners, so a face's last measured sag plus that move bounds its sag now: when
+    // the bound is under the limit (less a rounding margin) the queries are skipped and the answer
+    // is the one they would give. Per face: the last measured sag and its corners then.
+    std::vector<double> sagMeasured(faceSagStart);
+    std::vector<std::array<Vec3, 3>> sagCorners(faces_.size());
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
+        if (faceAlive_[f]) sagCorners[f] = {pos_[faces_[f][0]], pos_[faces_[f][1]], pos_[faces_[f][2]]};
+    auto sagExceeds = [&](int f, double limit) {
+        const Face& t = faces_[f];
+        double moved = 0;
+        for (int k = 0; k < 3; ++k) moved = std::max(moved, (pos_[t[k]] - sagCorners[f][k]).norm());
+        if (sagMeasured[f] + moved <= limit * (1 - 1e-9)) return false;
+        sagMeasured[f] = faceSag(f);
+        sagCorners[f] = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
+        return sagMeasured[f] > limit;
+    };
     auto faceMeasures = [&](int f, double& angle, double& dot) {
         const Face& t = faces_[f];
         angle = smallestAngle(pos_[t[0]], pos_[t[1]], pos_[t[2]]);
@@ -1113,7 +1163,7 @@ void ValenceOptimizer::relax()
                 faceMeasures(f, angle, dot);
                 const bool folded = dot < std::min(kMinNormalDot, faceDotBefore[f]);
                 const bool sharper = angle < minAngle && angle < faceAngleBefore[f] - 1e-9;
-                const bool offSurface = faceSag(f) > std::max(kRelaxSagGrowth * faceSagStart[f], maxSag);
+                const bool offSurface = sagExceeds(f, std::max(kRelaxSagGrowth * faceSagStart[f], maxSag));
                 wrong[f] = folded || sharper || offSurface;
             }
             std::vector<int> revert;
