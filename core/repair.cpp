@@ -184,7 +184,20 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         return input;
     }
     report.removedUnreferencedVertices = n - static_cast<int>(std::count(referenced.begin(), referenced.end(), 1));
-    const std::vector<Vec3>& pos = input.vertices;
+    // Computed on a copy scaled by a power of two (exact), so that squared lengths, cross
+    // products and areas neither overflow nor underflow at any model size (1e300, 1e-300); the
+    // output takes the input's own coordinates, and lengths and areas are reported in input units.
+    int exponent = 0;
+    {
+        double largest = 0;
+        for (int v = 0; v < n; ++v)
+            if (referenced[v]) largest = std::max(largest, input.vertices[v].cwiseAbs().maxCoeff());
+        if (largest > 0) std::frexp(largest, &exponent);
+    }
+    std::vector<Vec3> pos = input.vertices;
+    for (Vec3& p : pos)
+        for (int k = 0; k < 3; ++k) p[k] = std::ldexp(p[k], -exponent);
+    const double toInputLength = std::ldexp(1.0, exponent);
 
     // 1. Vertices at the same coordinates (-0 = +0), then border vertices within the tolerance.
     std::vector<int> rep(n);
@@ -209,7 +222,7 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
             if (t[k] != t[(k + 1) % 3]) edgeSum += (pos[t[k]] - pos[t[(k + 1) % 3]]).norm(), ++edgeCount;
     const double meanEdge = edgeCount > 0 ? edgeSum / double(edgeCount) : 0.0;
     const double tol = params.weldTolerance * meanEdge;
-    report.weldDistance = tol;
+    report.weldDistance = tol * toInputLength;
     if (tol > 0 && gridFits(pos, tol) && gridFits(pos, meanEdge)) {
         EdgeTable edges;
         const std::vector<char> border = borderVertices(faces, n, &edges);
@@ -413,7 +426,7 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         if (params.vertexBudget > 0 && total > 0) {
             std::vector<char> drop(faceCount, 0);
             int components = 0;
-            double largest = 0;
+            double largest = 0, droppedArea = 0;  // droppedArea in the scaled copy's units
             for (int f = 0; f < faceCount; ++f) {
                 if (sets.find(f) != f) continue;
                 ++components;
@@ -426,9 +439,10 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
                 }
                 drop[f] = 1;
                 ++report.droppedComponents;
-                report.droppedArea += area[f];
+                droppedArea += area[f];
             }
-            report.droppedAreaFraction = report.droppedArea / total;
+            report.droppedArea = droppedArea * toInputLength * toInputLength;
+            report.droppedAreaFraction = droppedArea / total;
             if (report.droppedComponents == components) {
                 std::ostringstream s;
                 s << "all " << components << " connected components are too small for " << params.vertexBudget
@@ -451,7 +465,7 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     for (int v = 0; v < working; ++v)
         if (index[v] == 0) {
             index[v] = out.vertexCount();
-            out.vertices.push_back(pos[v < n ? v : copySource[v - n]]);
+            out.vertices.push_back(input.vertices[v < n ? v : copySource[v - n]]);
         }
     for (int f = 0; f < faceCount; ++f)
         if (keepFace[f]) out.faces.push_back({index[cornerVertex[3 * f]], index[cornerVertex[3 * f + 1]], index[cornerVertex[3 * f + 2]]});

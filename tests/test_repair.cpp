@@ -217,6 +217,28 @@ TEST(Repair, FloatersBesideOneLargeComponentAreDroppedWithTheirArea)
     EXPECT_TRUE(said);
 }
 
+TEST(Repair, CountsAndOutputDoNotDependOnTheModelsScale)
+{
+    // A seam, a T-junction crack and floaters at 1 and at 1e300 / 1e-300 (squared lengths and
+    // areas would overflow / underflow there): the same steps, the input's own coordinates out.
+    TriMesh base = splitGrid(1e-13, true);
+    const TriMesh tiny = moved(testmesh::icosphere(0), 1e-3, {0, 0, 0});
+    for (int i = 0; i < 20; ++i) append(base, moved(tiny, 1, {2.0 + 0.01 * i, 0, 0}));
+    const Repaired unit = repairOf(base, 300);
+    ASSERT_EQ(unit.repair.droppedComponents, 20);
+    for (double scale : {1e300, 1e-300}) {
+        const Repaired r = repairOf(moved(base, scale, {0, 0, 0}), 300);
+        EXPECT_EQ(r.repair.weldedVertices, unit.repair.weldedVertices) << scale;
+        EXPECT_EQ(r.repair.tJunctions, unit.repair.tJunctions) << scale;
+        EXPECT_EQ(r.repair.droppedComponents, unit.repair.droppedComponents) << scale;
+        EXPECT_NEAR(r.repair.droppedAreaFraction, unit.repair.droppedAreaFraction, 1e-12) << scale;
+        EXPECT_NEAR(r.repair.weldDistance / scale, unit.repair.weldDistance, 1e-9 * unit.repair.weldDistance) << scale;
+        ASSERT_EQ(r.mesh.vertexCount(), unit.mesh.vertexCount()) << scale;
+        for (int v = 0; v < r.mesh.vertexCount(); ++v)
+            ASSERT_EQ(r.mesh.vertices[v], moved(unit.mesh, scale, {0, 0, 0}).vertices[v]) << scale;
+    }
+}
+
 TEST(Repair, NothingLeftFailsWithTheVertexCountNeeded)
 {
     TriMesh m;
