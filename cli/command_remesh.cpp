@@ -45,6 +45,11 @@ void printUsage()
         "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d)\n"
         "  --no-valence          skip the valence optimisation (flips, collapses, splits towards valence\n"
         "                        6, 4 on boundaries, then a relaxation; on by default)\n"
+        "  --no-repair           only check the input, as before the repair stage: refuse non-manifold\n"
+        "                        edges and non-orientable pieces, keep every component (by default\n"
+        "                        they are repaired: exact and near duplicate vertices welded, duplicate\n"
+        "                        and opposite faces removed, non-manifold edges and vertices split,\n"
+        "                        non-orientable pieces cut, components too small for N dropped)\n"
         "  --feature-angle DEG   input edges with a dihedral angle >= DEG degrees are sharp features the\n"
         "                        output follows, 0..180 (default %g: off)\n"
         "  --adaptive D          sample density: none (uniform) or curvature (more vertices where the\n"
@@ -56,7 +61,7 @@ void printUsage()
         "  --time-limit SEC      stop optimising after SEC seconds and write the best result so far,\n"
         "                        with a warning (default 0: no limit)\n"
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
-        "                        history, field singularities, valence optimisation, warnings\n"
+        "                        history, field singularities, valence optimisation, repair, warnings\n"
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise)\n"
         "  -h, --help            show this help\n",
@@ -110,6 +115,7 @@ RemeshParams paramsFrom(const Arguments& a)
     p.threads = static_cast<int>(a.integer("threads", p.threads, 0, 4096));
     p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds, 0.0);
     p.valenceOptimization = !a.flag("no-valence");
+    p.repair = !a.flag("no-repair");
     p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees, 0.0);
     if (p.featureAngleDegrees > 180)
         throw UsageError("--feature-angle must be 0..180 degrees (0 = off), got " + *a.text("feature-angle"));
@@ -138,7 +144,8 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"valence_optimization", p.valenceOptimization},
             {"feature_angle", p.featureAngleDegrees},
             {"adaptive", p.density == DensitySource::Curvature ? "curvature" : "none"},
-            {"gradation", p.gradation}};
+            {"gradation", p.gradation},
+            {"repair", p.repair}};
 }
 
 }  // namespace
@@ -148,7 +155,7 @@ int runRemesh(const std::vector<std::string>& args)
     const Arguments a(args,
                       {"vertices", "target-length", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads",
                        "time-limit", "report", "feature-angle", "adaptive", "gradation"},
-                      {"quiet", "help", "no-valence"});
+                      {"quiet", "help", "no-valence", "no-repair"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -225,6 +232,7 @@ int runRemesh(const std::vector<std::string>& args)
                                                {"metrics", metricsJson(result.metrics)},
                                                {"input", topologyJson(result.inputTopology)},
                                                {"output", topologyJson(outputTopology)},
+                                               {"repair", repairJson(params.repair, result.repair)},
                                                {"params", paramsOut},
                                                {"field", field},
                                                {"valence", valenceJson(params.valenceOptimization, result.valence)},

@@ -77,6 +77,29 @@ nlohmann::ordered_json valenceJson(bool enabled, const ValenceStats& v)
             {"irregularity_after", v.irregularityAfter}};
 }
 
+nlohmann::ordered_json repairJson(bool enabled, const RepairReport& r)
+{
+    if (!enabled) return {{"enabled", false}};
+    return {{"enabled", true},
+            {"removed_unreferenced_vertices", r.removedUnreferencedVertices},
+            {"merged_duplicate_vertices", r.mergedDuplicateVertices},
+            {"welded_vertices", r.weldedVertices},
+            {"weld_distance", r.weldDistance},
+            {"t_junctions", r.tJunctions},
+            {"removed_degenerate_faces", r.removedDegenerateFaces},
+            {"removed_duplicate_faces", r.removedDuplicateFaces},
+            {"removed_opposite_faces", r.removedOppositeFaces},
+            {"non_manifold_edges", r.nonManifoldEdges},
+            {"non_orientable_components", r.nonOrientableComponents},
+            {"seam_edges", r.seamEdges},
+            {"split_vertices", r.splitVertices},
+            {"added_vertex_copies", r.addedVertexCopies},
+            {"dropped_components", r.droppedComponents},
+            {"dropped_area", r.droppedArea},
+            {"dropped_area_fraction", r.droppedAreaFraction},
+            {"kept_small_components", r.keptSmallComponents}};
+}
+
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json)
 {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);

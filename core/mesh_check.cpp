@@ -1,5 +1,6 @@
 #include "mesh_check.h"
 
+#include "disjoint_sets.h"
 #include "errors.h"
 #include "mesh_edges.h"
 
@@ -23,27 +24,11 @@ std::string point(const Vec3& p)
 
 std::string vertexAt(const TriMesh& input, int v) { return std::to_string(v) + " " + point(input.vertices[v]); }
 
-// Union-find with path halving (no recursion: deep chains on large meshes are fine).
-struct DisjointSets {
-    std::vector<int> parent;
-    explicit DisjointSets(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int x)
-    {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(int a, int b)
-    {
-        a = find(a), b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-};
-
 int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
 
 }  // namespace
 
-TriMesh prepareInput(const TriMesh& input, InputReport& report)
+TriMesh prepareInput(const TriMesh& input, InputReport& report, bool mergeDuplicateVertices)
 {
     report = InputReport{};
     if (input.faces.empty())
@@ -67,7 +52,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report)
     // anything else: the faces on either side of a seam then share their edge.
     std::vector<int> rep(n);
     std::iota(rep.begin(), rep.end(), 0);
-    {
+    if (mergeDuplicateVertices) {
         std::vector<int> order;
         order.reserve(n);
         for (int v = 0; v < n; ++v)

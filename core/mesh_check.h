@@ -32,7 +32,9 @@ struct InputReport {
 //! several fans split into one vertex per fan; unreferenced vertices removed (the clean mesh
 //! keeps the input's vertex order, split copies come last). Throws InvalidInputError (one line:
 //! what and where) for an empty mesh, a point cloud, an out-of-range index, a non-finite
-//! coordinate, a non-manifold edge or a non-orientable component.
-TriMesh prepareInput(const TriMesh& input, InputReport& report);
+//! coordinate, a non-manifold edge or a non-orientable component. `mergeDuplicateVertices`
+//! false skips the merge (the repair stage, repair.h, has merged them and split some on
+//! purpose).
+TriMesh prepareInput(const TriMesh& input, InputReport& report, bool mergeDuplicateVertices = true);
 
 }  // namespace fieldcvt

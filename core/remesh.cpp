@@ -145,7 +145,9 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     std::vector<double> rho;  // CVT density per surface face (eq. 1), empty = uniform
     pipeline.run("prepare", [&] {
         InputReport report;
-        surface = prepareInput(input, report);
+        RepairParams repairParams = params.repairParams;
+        repairParams.vertexBudget = sampleCount;
+        surface = params.repair ? repairAndPrepare(input, repairParams, result.repair, report) : prepareInput(input, report);
         cleanIndex = report.cleanIndex;
         result.warnings.insert(result.warnings.end(), report.notes.begin(), report.notes.end());
         result.inputTopology = computeTopology(surface);

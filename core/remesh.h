@@ -4,6 +4,7 @@
 #include "field.h"
 #include "metrics.h"
 #include "progress.h"
+#include "repair.h"
 #include "valence.h"
 
 #include <array>
@@ -70,6 +71,11 @@ struct RemeshParams {
     //! DensitySource::PerVertex: μ, one finite value > 0 per input vertex (e.g. MeshLab's vertex
     //! quality); InvalidInputError otherwise.
     std::vector<double> vertexDensity;
+    //! Repair the input first (repair.h: welds, duplicate faces, non-manifold edges and
+    //! vertices, non-orientable pieces, components too small for the vertex count); false = the
+    //! strict check only, which refuses what it cannot take. vertexBudget is set by remesh().
+    bool repair = true;
+    RepairParams repairParams;
 };
 
 //! Energies after one L-BFGS step (an evaluation that lowered E_tot) or one Lloyd step.
@@ -99,6 +105,7 @@ struct RemeshResult {
     std::vector<Vec3> outputNormals, outputDirections;
     std::vector<Singularity> singularities;  //!< of the input's field, positions in input units
     ValenceStats valence;                    //!< V6% before / after valence optimisation, operations done
+    RepairReport repair;                     //!< what the repair stage did (RemeshParams::repair)
 };
 
 //! Remeshes `input` (validated first; throws InvalidInputError with a clear message).

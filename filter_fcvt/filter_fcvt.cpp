@@ -335,7 +335,18 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "The field that the edges follow (fieldSource) is an extrinsically smooth 6-RoSy "
                "field, a principal-curvature direction, or the per-vertex attribute <i>rosy</i> of "
                "the input (e.g. from <i>Compute 6-RoSy Field</i>). The output layer carries the "
-               "field interpolated at its vertices as the per-vertex attribute <i>rosy</i>.";
+               "field interpolated at its vertices as the per-vertex attribute <i>rosy</i>.<br>"
+               "Input repair (<i>repair</i>, on by default; every step counted in the log): "
+               "vertices at the same coordinates, and border vertices closer than 0.001 of the "
+               "mean edge length (cracks, seams, T-junctions), are welded, never farther apart; "
+               "duplicate and opposite duplicate faces are removed; non-manifold edges are split "
+               "into manifold sheets, non-manifold vertices into one vertex per fan; a "
+               "non-orientable piece is cut along a seam into orientable ones; components that "
+               "would get fewer than 8 samples and hold under 1% of the area are dropped (if none "
+               "is left the filter fails and says how many vertices are needed). Refused even "
+               "so: no faces, NaN/Inf coordinates, bad indices. With <i>repair</i> off, "
+               "non-manifold edges and non-orientable components are refused as before and every "
+               "component is kept.";
     case FP_FCVT_FIELD:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
@@ -469,6 +480,14 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
                               "Colour the output's vertices by valence: blue below 6 (4 on a "
                               "boundary), pink above, white at it. Replaces the colour carried "
                               "over from the input."));
+        // Appended (issue 17), so older scripts keep their order.
+        par.addParam(RichBool(kRepair, defaults.repair, "Repair the input",
+                              "Before remeshing, weld coincident and nearly coincident border "
+                              "vertices (cracks, seams, T-junctions), remove duplicate and opposite "
+                              "faces, split non-manifold edges and vertices, cut non-orientable "
+                              "pieces along a seam, and drop components too small for the vertex "
+                              "count; each step is counted in the log. Off: the strict check only, "
+                              "which refuses non-manifold edges and non-orientable pieces."));
         break;
     }
     case FP_FCVT_FIELD: {
@@ -596,6 +615,7 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
     inputs.densityFromQuality = par.getBool(kAdaptive);
     inputs.featuresFromSelection = par.getBool(kFeatureSelection);
     inputs.colorIrregular = par.getBool(kColorIrregular);
+    params.repair = par.getBool(kRepair);
     return remeshFcvt(md, params, inputs, cb);
 }
 
@@ -813,6 +833,10 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     } else {
         Log("FCVT valence optimisation: off");
     }
+    Log(run.repair ? QString("FCVT repair: %1 (the counts are in the warnings)")
+                         .arg(result.repair.notes.empty() ? "nothing to repair" : "done")
+                         .toStdString()
+                   : std::string("FCVT repair: off (strict input check)"));
     Log(QString("FCVT size: mean edge length %1 (%2 vertices)")
             .arg(num(meanEdgeLength(result.mesh)))
             .arg(result.mesh.vertexCount())

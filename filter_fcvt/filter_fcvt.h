@@ -48,6 +48,8 @@ public:
     static constexpr const char* kAdaptive = "adaptive";
     //! Remeshing (default off) and quality report (default on): colour vertices by valence.
     static constexpr const char* kColorIrregular = "colorIrregular";
+    //! Remeshing: repair the input first (repair.h); off = the strict check only.
+    static constexpr const char* kRepair = "repair";
     //! Quality report: the layer d_RMS / d_H are measured against (itself = no distances).
     static constexpr const char* kReferenceLayer = "referenceLayer";
     //! Name of the per-vertex Point3m attribute that holds a 6-RoSy field (representative d).

@@ -16,6 +16,19 @@ add_test(NAME robustness_cli_fuzz
   COMMAND Python3::Interpreter "${_fcvt_rob_dir}/fuzz_cli.py" $<TARGET_FILE:fcvt> "${_fcvt_rob_work}/cli_fuzz"
           --seed 20240606 --count 200 --timeout 20 --jobs 2)
 set_tests_properties(robustness_cli_corpus robustness_cli_fuzz PROPERTIES LABELS robustness TIMEOUT 300)
+# Issue 17: the repair stage on generated inputs of each kind, its counts in the report and in
+# the filter's log (the meshlabserver half when the plugin, xvfb-run and meshlabserver are there).
+set(_fcvt_repair_meshlab "")
+if(TARGET filter_fcvt)
+  find_program(FCVT_XVFB_RUN xvfb-run)
+  if(FCVT_XVFB_RUN AND EXISTS /usr/bin/meshlabserver)
+    set(_fcvt_repair_meshlab --source "${PROJECT_SOURCE_DIR}" --plugin $<TARGET_FILE:filter_fcvt>)
+  endif()
+endif()
+add_test(NAME robustness_repair
+  COMMAND Python3::Interpreter "${_fcvt_rob_dir}/check_repair.py" $<TARGET_FILE:fcvt> "${_fcvt_rob_work}/repair"
+          ${_fcvt_repair_meshlab})
+set_tests_properties(robustness_repair PROPERTIES LABELS "robustness;meshlab" TIMEOUT 600)
 
 if(TARGET filter_fcvt)
   find_program(FCVT_XVFB_RUN xvfb-run)

@@ -27,7 +27,7 @@ frozen = {  # filter name -> parameter names, in declaration order (frozen API)
     "Remeshing: Field-Aligned CVT (FCVT)":
         ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed",
          "sizeMode", "targetLength", "valenceOptimization", "featureAngle", "featureSelection",
-         "adaptive", "colorIrregular"],
+         "adaptive", "colorIrregular", "repair"],
     "Compute 6-RoSy Field": ["fieldSource", "seed"],
     "Remeshing Quality Report (FCVT)": ["referenceLayer", "colorIrregular"],
 }

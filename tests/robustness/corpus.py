@@ -84,14 +84,36 @@ def cases():
     out.append(case("quads_ply", "ply", g.ply_bytes(cube, False), "ok", meshlab=True))
 
     # Topology.
-    out.append(case("nonmanifold_edge", "off", g.off_bytes(g.nonmanifold_edge()), "error",
+    # Repaired by default since issue 17 (README, "Bad input"); refused as before with --no-repair.
+    strict = FAST + ["--no-repair"]
+    out.append(case("nonmanifold_edge", "off", g.off_bytes(g.nonmanifold_edge()), "ok", meshlab=True))
+    out.append(case("nonmanifold_edge_strict", "off", g.off_bytes(g.nonmanifold_edge()), "error", args=strict,
                     fragment="non-manifold edge", meshlab=True))
     out.append(case("nonmanifold_vertex", "off", g.off_bytes(g.two_cones_at_apex(12)), "ok", meshlab=True))
     flipped = [list(t) for t in torus[1]]
     for i in rng.sample(range(len(flipped)), len(flipped) // 3):
         flipped[i] = flipped[i][::-1]
     out.append(case("inconsistent_orientation", "off", g.off_bytes((torus[0], flipped)), "ok", meshlab=True))
-    out.append(case("moebius", "off", g.off_bytes(g.moebius()), "error", fragment="not orientable", meshlab=True))
+    out.append(case("moebius", "off", g.off_bytes(g.moebius()), "ok", meshlab=True))
+    out.append(case("moebius_strict", "off", g.off_bytes(g.moebius()), "error", args=strict, fragment="not orientable",
+                    meshlab=True))
+
+    # Real-world inputs (issue 17): repaired into a manifold, oriented mesh.
+    out.append(case("every_face_twice", "off", g.off_bytes(g.every_face_twice(sphere)), "ok", meshlab=True))
+    out.append(case("fin_of_three_sheets", "off", g.off_bytes(g.fin_of_three_sheets()), "ok", meshlab=True))
+    out.append(case("two_shells_sharing_an_edge", "ply", g.ply_bytes(g.two_shells_sharing_an_edge()), "ok",
+                    meshlab=True))
+    out.append(case("moebius_among_others", "off",
+                    g.off_bytes(g.combine(sphere, g.transform(g.moebius(), 1, (3, 0, 0)), g.transform(torus, 1, (-3, 0, 0)))),
+                    "ok", meshlab=True))
+    out.append(case("seam_1e-12", "ply", g.ply_bytes(g.seam(1e-12)), "ok", meshlab=True))
+    out.append(case("t_junction_crack", "ply", g.ply_bytes(g.seam(1e-13, fine=True)), "ok", meshlab=True))
+    out.append(case("floaters_1000", "off", g.off_bytes(g.floaters(sphere)), "ok", meshlab=True))
+    # 1000 comparable tiny components at 300 vertices: nothing can be kept, a clear error (was a
+    # 3-vertex "mesh" of two coincident faces with exit 0).
+    tiny_ones = g.combine(*[g.transform(g.tetrahedron(), 0.1, (i % 10, i // 10 % 10, i // 100)) for i in range(1000)])
+    out.append(case("thousand_tiny_components_300", "off", g.off_bytes(tiny_ones), "error",
+                    args=["--vertices", "300"] + FAST[2:], fragment="too small", meshlab=True))
     tiny = g.transform(g.icosphere(1), 1e-3, (3, 0, 0))
     out.append(case("two_components_one_tiny", "off", g.off_bytes(g.combine(sphere, tiny)), "ok", meshlab=True))
     out.append(case("two_components", "ply", g.ply_bytes(g.combine(sphere, g.transform(torus, 1, (4, 0, 0)))),

@@ -154,6 +154,69 @@ def moebius(n=24, width=0.3):
     return v, f
 
 
+def every_face_twice(mesh):
+    """Each face stored twice, in turn reversed and as it is (double-sided game assets)."""
+    v, f = mesh
+    return [list(p) for p in v], [list(t) for t in f] + [t[::-1] if i % 2 == 0 else list(t) for i, t in enumerate(f)]
+
+
+def fin_of_three_sheets(rows=3):
+    """Three rectangular sheets (rows x 1 quads, triangulated) hanging from one line of edges."""
+    v = [[0.0, 0.0, j / rows] for j in range(rows + 1)]
+    f = []
+    for s in range(3):
+        a = 2 * math.pi * s / 3
+        o = len(v)
+        v += [[math.cos(a), math.sin(a), j / rows] for j in range(rows + 1)]
+        for j in range(rows):
+            f += [[j, o + j, o + j + 1], [j, o + j + 1, j + 1]]
+    return v, f
+
+
+def two_shells_sharing_an_edge(cells=3):
+    """Two closed quad cubes (triangulated) touching along one edge, vertices shared there."""
+    v1, q1 = quad_cube(cells)
+    v2 = [[p[0] + 2, p[1] + 2, p[2]] for p in v1]  # the cube [-1, 1]^3 and [1, 3]^2 x [-1, 1]
+    v, f = combine((v1, triangulate(q1)), (v2, triangulate(q1)))
+    return weld_exact((v, f))
+
+
+def triangulate(polygons):
+    return [[p[0], p[i], p[i + 1]] for p in polygons for i in range(1, len(p) - 1)]
+
+
+def weld_exact(mesh):
+    """Vertices at the same coordinates merged into the first."""
+    v, f = mesh
+    index, nv, remap = {}, [], []
+    for p in v:
+        key = tuple(p)
+        if key not in index:
+            index[key] = len(nv)
+            nv.append(list(p))
+        remap.append(index[key])
+    return nv, [[remap[c] for c in t] for t in f]
+
+
+def seam(gap=1e-12, cells=6, fine=False):
+    """A unit square as two halves, the right one with its own vertices `gap` to the right of the
+    left one's along x = 0.5 (fine: twice as many there, a T-junction crack)."""
+    lv, lf = grid(cells)
+    rv, rf = grid(2 * cells if fine else cells)
+    lv = [[0.5 * p[0], p[1], p[2]] for p in lv]
+    rv = [[0.5 + gap + 0.5 * p[0], p[1], p[2]] for p in rv]
+    return combine((lv, lf), (rv, rf))
+
+
+def floaters(main, count=1000, size=1e-3, at=(2.0, 0.0, 0.0)):
+    """`main` and `count` tiny tetrahedra beside it."""
+    parts = [main]
+    for i in range(count):
+        parts.append(transform(tetrahedron(), size, (at[0] + 0.01 * (i % 10), at[1] + 0.01 * (i // 10 % 10),
+                                                    at[2] + 0.01 * (i // 100))))
+    return combine(*parts)
+
+
 def soup(mesh):
     """Every face with its own vertices (exact duplicates at shared corners)."""
     v, f = mesh

@@ -21,6 +21,10 @@ MLX_NAMES = {"--vertices": "vertexCount", "--lambda": "lambda", "--cvt-iteration
 
 def mlx_for(template, args):
     text = template
+    if "--no-repair" in args:  # the one flag without a value: the checkbox off
+        args = [x for x in args if x != "--no-repair"]
+        text, n = re.subn(r'(name="repair"[^>]*value=")[^"]*"', r'\g<1>false"', text)
+        assert n == 1, "no parameter repair in the .mlx template"
     for flag, value in zip(args[0::2], args[1::2]):
         name = MLX_NAMES.get(flag)
         if name:

@@ -1,0 +1,507 @@
+#include "repair.h"
+
+#include "disjoint_sets.h"
+#include "errors.h"
+#include "mesh_edges.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iomanip>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+namespace fieldcvt {
+
+namespace {
+
+int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
+
+std::uint64_t mix(std::uint64_t h, std::uint64_t x)
+{
+    h ^= x + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    return h;
+}
+
+struct TripleHash {
+    template <class T>
+    size_t operator()(const std::array<T, 3>& k) const
+    {
+        std::uint64_t h = 0;
+        for (const T& x : k) {
+            std::uint64_t bits = 0;
+            static_assert(sizeof(T) <= sizeof(bits), "8-byte keys");
+            std::memcpy(&bits, &x, sizeof(T));
+            h = mix(h, bits);
+        }
+        return size_t(h);
+    }
+};
+
+using Cell = std::array<std::int64_t, 3>;
+
+// Points hashed into cubic cells of side `size`: the candidates within `size` of a point are in
+// the 27 cells around its own.
+class PointGrid {
+public:
+    PointGrid(double size, size_t expected) : size_(size) { cells_.reserve(expected); }
+    Cell cellOf(const Vec3& p) const
+    {
+        return {std::int64_t(std::floor(p.x() / size_)), std::int64_t(std::floor(p.y() / size_)),
+                std::int64_t(std::floor(p.z() / size_))};
+    }
+    void insert(const Vec3& p, int id) { cells_[cellOf(p)].push_back(id); }
+    template <class Visit>
+    void around(const Vec3& p, Visit&& visit) const
+    {
+        const Cell c = cellOf(p);
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    const auto it = cells_.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it != cells_.end())
+                        for (int id : it->second) visit(id);
+                }
+    }
+
+private:
+    double size_;
+    std::unordered_map<Cell, std::vector<int>, TripleHash> cells_;
+};
+
+// Whether cells of side `size` can index every point of the box (no int64 overflow).
+bool gridFits(const std::vector<Vec3>& points, double size)
+{
+    double extent = 0;
+    for (const Vec3& p : points) extent = std::max(extent, p.cwiseAbs().maxCoeff());
+    return size > 0 && std::isfinite(extent / size) && extent / size < 1e15;
+}
+
+std::vector<char> borderVertices(const std::vector<Face>& faces, int n, EdgeTable* table = nullptr)
+{
+    EdgeTable edges = buildEdgeTable(faces, n, RepeatedVertexFaces::Skip);
+    std::vector<char> border(n, 0);
+    for (int e = 0; e < edges.edgeCount(); ++e)
+        if (edges.isBorder(e)) border[edges.ends[e][0]] = border[edges.ends[e][1]] = 1;
+    if (table) *table = std::move(edges);
+    return border;
+}
+
+bool degenerate(const std::vector<Vec3>& p, const Face& t)
+{
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return true;
+    const Vec3 normal = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
+    return (normal.array() == 0.0).all();
+}
+
+// Border vertices within `tol` of the inside of a border edge are inserted into it (the faces on
+// the edge are split from their opposite corner). One edge per face and pass; three passes.
+int insertTJunctions(const std::vector<Vec3>& pos, std::vector<Face>& faces, double tol, double cell)
+{
+    int inserted = 0;
+    const int n = static_cast<int>(pos.size());
+    for (int pass = 0; pass < 3; ++pass) {
+        EdgeTable edges;
+        const std::vector<char> border = borderVertices(faces, n, &edges);
+        PointGrid grid(cell, size_t(n / 4 + 1));
+        for (int v = 0; v < n; ++v)
+            if (border[v]) grid.insert(pos[v], v);
+        // Per face: the side that gets points, and the points with their parameter along it.
+        std::vector<int> sideOf(faces.size(), -1);
+        std::vector<std::vector<std::pair<double, int>>> points(faces.size());
+        for (int e = 0; e < edges.edgeCount(); ++e) {
+            if (!edges.isBorder(e)) continue;
+            const int h = edges.halfEdge(e, 0), f = h / 3;
+            if (sideOf[f] >= 0) continue;  // the next pass
+            const int a = faces[f][h % 3], b = faces[f][(h % 3 + 1) % 3];
+            const Vec3 d = pos[b] - pos[a];
+            const double length2 = d.squaredNorm();
+            std::vector<std::pair<double, int>> found;
+            const int steps = static_cast<int>(std::min(1e6, std::ceil(std::sqrt(length2) / cell))) + 1;
+            for (int i = 0; i <= steps; ++i)
+                grid.around(pos[a] + (double(i) / steps) * d, [&](int p) {
+                    if (p == a || p == b || p == faces[f][(h % 3 + 2) % 3]) return;
+                    const double t = (pos[p] - pos[a]).dot(d) / length2;
+                    if (!(t > 0 && t < 1)) return;
+                    if ((pos[p] - pos[a] - t * d).norm() > tol) return;
+                    if ((pos[p] - pos[a]).norm() <= tol || (pos[p] - pos[b]).norm() <= tol) return;
+                    found.push_back({t, p});
+                });
+            if (found.empty()) continue;
+            std::sort(found.begin(), found.end());
+            found.erase(std::unique(found.begin(), found.end()), found.end());
+            sideOf[f] = h % 3;
+            points[f] = std::move(found);
+        }
+        const size_t before = faces.size();
+        for (size_t f = 0; f < before; ++f) {
+            if (sideOf[f] < 0) continue;
+            const int k = sideOf[f];
+            const int a = faces[f][k], b = faces[f][(k + 1) % 3], c = faces[f][(k + 2) % 3];
+            int from = a;
+            for (size_t i = 0; i < points[f].size(); ++i) {
+                const int p = points[f][i].second;
+                if (i == 0) faces[f] = {from, p, c};
+                else faces.push_back({from, p, c});
+                from = p;
+                ++inserted;
+            }
+            faces.push_back({from, b, c});
+        }
+        if (faces.size() == before) break;
+    }
+    return inserted;
+}
+
+std::string percent(double fraction)
+{
+    std::ostringstream s;
+    s << std::setprecision(3) << 100 * fraction << " %";
+    return s.str();
+}
+
+}  // namespace
+
+TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairReport& report)
+{
+    report = RepairReport{};
+    const int n = input.vertexCount();
+    report.vertexMap.resize(n);
+    std::iota(report.vertexMap.begin(), report.vertexMap.end(), 0);
+    std::vector<char> referenced(n, 0);
+    for (const Face& t : input.faces)
+        for (int c : t) {
+            if (c < 0 || c >= n || !input.vertices[c].allFinite()) {
+                report.skipped = true;  // the strict check says what and where
+                return input;
+            }
+            referenced[c] = 1;
+        }
+    if (input.faces.empty()) {
+        report.skipped = true;
+        return input;
+    }
+    report.removedUnreferencedVertices = n - static_cast<int>(std::count(referenced.begin(), referenced.end(), 1));
+    const std::vector<Vec3>& pos = input.vertices;
+
+    // 1. Vertices at the same coordinates (-0 = +0), then border vertices within the tolerance.
+    std::vector<int> rep(n);
+    std::iota(rep.begin(), rep.end(), 0);
+    {
+        std::unordered_map<std::array<double, 3>, int, TripleHash> first;
+        first.reserve(size_t(n));
+        for (int v = 0; v < n; ++v) {
+            if (!referenced[v]) continue;
+            const std::array<double, 3> key{pos[v].x() + 0.0, pos[v].y() + 0.0, pos[v].z() + 0.0};
+            const auto [it, added] = first.emplace(key, v);
+            if (!added) rep[v] = it->second, ++report.mergedDuplicateVertices;
+        }
+    }
+    std::vector<Face> faces;
+    faces.reserve(input.faces.size());
+    for (const Face& t : input.faces) faces.push_back({rep[t[0]], rep[t[1]], rep[t[2]]});
+    double edgeSum = 0;
+    long long edgeCount = 0;
+    for (const Face& t : faces)
+        for (int k = 0; k < 3; ++k)
+            if (t[k] != t[(k + 1) % 3]) edgeSum += (pos[t[k]] - pos[t[(k + 1) % 3]]).norm(), ++edgeCount;
+    const double meanEdge = edgeCount > 0 ? edgeSum / double(edgeCount) : 0.0;
+    const double tol = params.weldTolerance * meanEdge;
+    report.weldDistance = tol;
+    if (tol > 0 && gridFits(pos, tol) && gridFits(pos, meanEdge)) {
+        EdgeTable edges;
+        const std::vector<char> border = borderVertices(faces, n, &edges);
+        DisjointSets weld(n);
+        PointGrid grid(tol, size_t(n / 4 + 1));
+        for (int v = 0; v < n; ++v) {
+            if (!border[v] || rep[v] != v) continue;
+            grid.around(pos[v], [&](int u) {
+                if ((pos[u] - pos[v]).norm() <= tol && edges.find(u, v) < 0) weld.unite(u, v);
+            });
+            grid.insert(pos[v], v);
+        }
+        for (int v = 0; v < n; ++v)
+            if (rep[v] == v && weld.find(v) != v) ++report.weldedVertices;
+        for (int v = 0; v < n; ++v) rep[v] = weld.find(rep[v]);
+        for (Face& t : faces)
+            for (int& c : t) c = rep[c];
+        report.tJunctions = insertTJunctions(pos, faces, tol, meanEdge);
+    }
+
+    // 2. Degenerate, duplicate and opposite faces.
+    {
+        std::vector<Face> kept;
+        kept.reserve(faces.size());
+        std::unordered_map<std::array<int, 3>, int, TripleHash> seen;
+        seen.reserve(faces.size());
+        for (const Face& t : faces) {
+            if (degenerate(pos, t)) {
+                ++report.removedDegenerateFaces;
+                continue;
+            }
+            std::array<int, 3> key = t;
+            std::sort(key.begin(), key.end());
+            const auto [it, added] = seen.emplace(key, static_cast<int>(kept.size()));
+            if (added) {
+                kept.push_back(t);
+                continue;
+            }
+            // Same cyclic order as the kept face: a duplicate; otherwise its opposite.
+            const Face& other = kept[it->second];
+            const int k = cornerOf(other, t[0]);
+            if (other[(k + 1) % 3] == t[1]) ++report.removedDuplicateFaces;
+            else ++report.removedOppositeFaces;
+        }
+        faces.swap(kept);
+    }
+    if (faces.empty()) {
+        report.skipped = true;  // every face degenerate: the strict check's message
+        return input;
+    }
+    const int faceCount = static_cast<int>(faces.size());
+    auto origin = [&](int h) { return faces[h / 3][h % 3]; };
+    auto target = [&](int h) { return faces[h / 3][(h % 3 + 1) % 3]; };
+
+    // 3. Which face continues which across each edge: partner[h] is the half-edge glued to h.
+    const EdgeTable edges = buildEdgeTable(faces, n);
+    std::vector<int> partner(3 * size_t(faceCount), -1);
+    auto cut = [&](int h) {
+        if (partner[h] >= 0) partner[partner[h]] = -1;
+        partner[h] = -1;
+    };
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        const int k = edges.faceCount(e);
+        if (k == 2) {
+            partner[edges.halfEdge(e, 0)] = edges.halfEdge(e, 1);
+            partner[edges.halfEdge(e, 1)] = edges.halfEdge(e, 0);
+        }
+        if (k <= 2) continue;
+        // Around the edge lo -> hi, by angle: a face running lo -> hi faces the larger angles,
+        // one running hi -> lo the smaller; two consecutive faces enclosing the same side (the
+        // first running hi -> lo, the next lo -> hi) make one manifold sheet.
+        ++report.nonManifoldEdges;
+        const auto [lo, hi] = edges.ends[e];
+        const Vec3 axis = (pos[hi] - pos[lo]).normalized();
+        const Vec3 u = axis.unitOrthogonal(), w = axis.cross(u);
+        std::vector<std::pair<double, int>> around;
+        for (int i = 0; i < k; ++i) {
+            const int h = edges.halfEdge(e, i);
+            const Vec3 d = pos[faces[h / 3][(h % 3 + 2) % 3]] - pos[lo];
+            around.push_back({std::atan2(d.dot(w), d.dot(u)), h});
+        }
+        std::sort(around.begin(), around.end());
+        for (int i = 0; i < k; ++i) {
+            const int h = around[i].second, next = around[(i + 1) % k].second;
+            if (origin(h) == hi && origin(next) == lo && partner[h] < 0 && partner[next] < 0)
+                partner[h] = next, partner[next] = h;
+        }
+    }
+
+    // 4. Orientation: a breadth-first walk per component; a glued edge whose faces disagree
+    // with the orientation reached so far is cut (the seam of a Moebius-like piece).
+    {
+        std::vector<int> component(faceCount, -1);
+        std::vector<char> flip(faceCount, 0);
+        std::vector<int> queue;
+        int components = 0;
+        for (int start = 0; start < faceCount; ++start) {
+            if (component[start] >= 0) continue;
+            const int c = components++;
+            bool cutHere = false;
+            component[start] = c;
+            queue.assign(1, start);
+            for (size_t head = 0; head < queue.size(); ++head) {
+                const int f = queue[head];
+                for (int k = 0; k < 3; ++k) {
+                    const int h = 3 * f + k, p = partner[h];
+                    if (p < 0) continue;
+                    const int g = p / 3;
+                    const char required = flip[f] ^ static_cast<char>(origin(h) == origin(p));
+                    if (component[g] < 0) {
+                        component[g] = c, flip[g] = required;
+                        queue.push_back(g);
+                    } else if (flip[g] != required) {
+                        cut(h);
+                        ++report.seamEdges;
+                        cutHere = true;
+                    }
+                }
+            }
+            report.nonOrientableComponents += cutHere;
+        }
+    }
+
+    // 5. One vertex per fan of corners glued across edges. A face cut from faces that still
+    // share both ends of the edge (a cut that splits neither end) is detached at one corner:
+    // its other edge at that corner is cut too.
+    std::vector<int> cornerVertex(3 * size_t(faceCount));
+    std::vector<int> copySource;  // vertex n + i is a copy of copySource[i]
+    for (int round = 0;; ++round) {
+        DisjointSets corners(3 * faceCount);
+        for (int h = 0; h < 3 * faceCount; ++h) {
+            const int p = partner[h];
+            if (p < h) continue;
+            const int f = h / 3, g = p / 3;
+            for (int v : {origin(h), target(h)}) corners.unite(3 * f + cornerOf(faces[f], v), 3 * g + cornerOf(faces[g], v));
+        }
+        std::vector<int> firstFan(n, -1), copyOfFan(3 * size_t(faceCount), -1);
+        copySource.clear();
+        for (int c = 0; c < 3 * faceCount; ++c) {
+            const int v = faces[c / 3][c % 3], root = corners.find(c);
+            if (firstFan[v] < 0) firstFan[v] = root;
+            if (root == firstFan[v]) {
+                cornerVertex[c] = v;
+                continue;
+            }
+            if (copyOfFan[root] < 0) copyOfFan[root] = n + static_cast<int>(copySource.size()), copySource.push_back(v);
+            cornerVertex[c] = copyOfFan[root];
+        }
+        bool detached = false;
+        std::vector<std::pair<std::array<int, 2>, int>> ends;
+        for (int e = 0; e < edges.edgeCount(); ++e) {
+            if (edges.faceCount(e) < 2) continue;
+            ends.clear();
+            for (int i = 0; i < edges.faceCount(e); ++i) {
+                const int h = edges.halfEdge(e, i);
+                const int a = cornerVertex[h], b = cornerVertex[3 * (h / 3) + (h % 3 + 1) % 3];
+                ends.push_back({{std::min(a, b), std::max(a, b)}, h});
+            }
+            std::sort(ends.begin(), ends.end());
+            for (size_t i = 0, j; i < ends.size(); i = j) {
+                for (j = i + 1; j < ends.size() && ends[j].first == ends[i].first; ++j) {}
+                if (j - i == 1 || (j - i == 2 && partner[ends[i].second] == ends[i + 1].second)) continue;
+                int keep = ends[i].second;  // a glued pair if there is one, else the first face
+                for (size_t m = i; m < j; ++m)
+                    if (partner[ends[m].second] >= 0) {
+                        keep = ends[m].second;
+                        break;
+                    }
+                for (size_t m = i; m < j; ++m) {
+                    const int h = ends[m].second;
+                    if (h == keep || h == partner[keep]) continue;
+                    cut(h);
+                    cut(3 * (h / 3) + (h % 3 + 2) % 3);
+                    detached = true;
+                }
+            }
+        }
+        if (!detached || round == 8) break;
+    }
+    {
+        std::vector<char> split(n, 0);
+        for (int s : copySource) split[s] = 1;
+        report.splitVertices = static_cast<int>(std::count(split.begin(), split.end(), 1));
+        report.addedVertexCopies = static_cast<int>(copySource.size());
+    }
+
+    // 6. Components (through glued edges) too small for the vertex budget.
+    std::vector<char> keepFace(faceCount, 1);
+    {
+        DisjointSets sets(faceCount);
+        for (int h = 0; h < 3 * faceCount; ++h)
+            if (partner[h] > h) sets.unite(h / 3, partner[h] / 3);
+        std::vector<double> area(faceCount, 0.0);
+        double total = 0;
+        for (int f = 0; f < faceCount; ++f) {
+            const Face& t = faces[f];
+            const double a = 0.5 * (pos[t[1]] - pos[t[0]]).cross(pos[t[2]] - pos[t[0]]).norm();
+            area[sets.find(f)] += a;
+            total += a;
+        }
+        if (params.vertexBudget > 0 && total > 0) {
+            std::vector<char> drop(faceCount, 0);
+            int components = 0;
+            double largest = 0;
+            for (int f = 0; f < faceCount; ++f) {
+                if (sets.find(f) != f) continue;
+                ++components;
+                largest = std::max(largest, area[f]);
+                const double share = area[f] / total;
+                if (params.vertexBudget * share >= params.minComponentSamples) continue;
+                if (share >= params.keepAreaFraction) {
+                    ++report.keptSmallComponents;
+                    continue;
+                }
+                drop[f] = 1;
+                ++report.droppedComponents;
+                report.droppedArea += area[f];
+            }
+            report.droppedAreaFraction = report.droppedArea / total;
+            if (report.droppedComponents == components) {
+                std::ostringstream s;
+                s << "all " << components << " connected components are too small for " << params.vertexBudget
+                  << " vertices: the largest holds " << percent(largest / total) << " of the area and would get "
+                  << std::setprecision(3) << params.vertexBudget * largest / total << " samples (at least "
+                  << params.minComponentSamples << " make a surface); use at least "
+                  << static_cast<long long>(std::ceil(params.minComponentSamples * total / largest - 1e-6)) << " vertices";
+                throw InvalidInputError(s.str());
+            }
+            for (int f = 0; f < faceCount; ++f) keepFace[f] = !drop[sets.find(f)];
+        }
+    }
+
+    // 7. The repaired mesh: referenced vertices in input order, then the copies.
+    const int working = n + static_cast<int>(copySource.size());
+    std::vector<int> index(working, -1);
+    for (int c = 0; c < 3 * faceCount; ++c)
+        if (keepFace[c / 3]) index[cornerVertex[c]] = 0;
+    TriMesh out;
+    for (int v = 0; v < working; ++v)
+        if (index[v] == 0) {
+            index[v] = out.vertexCount();
+            out.vertices.push_back(pos[v < n ? v : copySource[v - n]]);
+        }
+    for (int f = 0; f < faceCount; ++f)
+        if (keepFace[f]) out.faces.push_back({index[cornerVertex[3 * f]], index[cornerVertex[3 * f + 1]], index[cornerVertex[3 * f + 2]]});
+    for (int v = 0; v < n; ++v) report.vertexMap[v] = referenced[v] ? index[rep[v]] : -1;
+
+    auto note = [&](int count, const std::string& text) {
+        if (count > 0) report.notes.push_back("repair: " + std::to_string(count) + " " + text);
+    };
+    note(report.removedUnreferencedVertices, "unreferenced vertices removed");
+    note(report.mergedDuplicateVertices, "vertices merged with another at the same coordinates");
+    {
+        std::ostringstream s;
+        s << std::setprecision(3) << report.weldDistance << " (" << params.weldTolerance << " x the mean edge length)";
+        note(report.weldedVertices, "border vertices welded to another within " + s.str() + " (cracks, seams)");
+        note(report.tJunctions, "border vertices inserted into a border edge within " + s.str() + " (T-junctions)");
+    }
+    note(report.removedDegenerateFaces, "degenerate faces removed (repeated corner or no area)");
+    note(report.removedDuplicateFaces, "duplicate faces removed (same corners, same orientation)");
+    note(report.removedOppositeFaces, "opposite duplicate faces removed (same corners, reversed)");
+    note(report.nonManifoldEdges, "non-manifold edges (more than two faces) split into manifold sheets");
+    if (report.nonOrientableComponents > 0)
+        note(report.nonOrientableComponents, "non-orientable components cut along a seam of " +
+                                                 std::to_string(report.seamEdges) + " edges into orientable pieces");
+    note(report.splitVertices, "vertices split into one vertex per fan (non-manifold vertices and the ends of cuts; " +
+                                   std::to_string(report.addedVertexCopies) + " vertices added)");
+    if (report.droppedComponents > 0) {
+        std::ostringstream s;
+        s << "connected components too small for " << params.vertexBudget << " vertices dropped (fewer than "
+          << params.minComponentSamples << " samples each): area " << std::setprecision(4) << report.droppedArea << ", "
+          << percent(report.droppedAreaFraction) << " of the surface";
+        note(report.droppedComponents, s.str());
+    }
+    if (report.keptSmallComponents > 0)
+        note(report.keptSmallComponents, "connected components get fewer than " + std::to_string(int(params.minComponentSamples)) +
+                                             " samples but hold over " + percent(params.keepAreaFraction) +
+                                             " of the area each: kept (use more vertices)");
+    return out;
+}
+
+TriMesh repairAndPrepare(const TriMesh& input, const RepairParams& params, RepairReport& repair, InputReport& report)
+{
+    const TriMesh repaired = repairMesh(input, params, repair);
+    if (repair.skipped) return prepareInput(input, report);
+    TriMesh clean = prepareInput(repaired, report, false);
+    std::vector<int> cleanIndex(input.vertices.size(), -1);
+    for (size_t v = 0; v < cleanIndex.size(); ++v)
+        if (repair.vertexMap[v] >= 0) cleanIndex[v] = report.cleanIndex[size_t(repair.vertexMap[v])];
+    report.cleanIndex = std::move(cleanIndex);
+    report.notes.insert(report.notes.begin(), repair.notes.begin(), repair.notes.end());
+    return clean;
+}
+
+}  // namespace fieldcvt

@@ -1,0 +1,80 @@
+#pragma once
+// Repair of real-world inputs before the remeshing (issue 17): what scanners, surface
+// reconstructions and CAD or game-asset exporters produce and the strict input check
+// (mesh_check.h) refuses or keeps as broken pieces. Every step is counted in RepairReport.
+// Linear in the input: hashes of coordinates, faces and grid cells, one edge table, union-finds.
+//
+// In this order:
+//  1. vertices at exactly the same coordinates merged; border vertices (on an edge with one
+//     face) closer than weldTolerance × the mean edge length merged (cracks, seams); a border
+//     vertex that close to the inside of a border edge inserted into it (T-junctions). Vertices
+//     joined by an edge are never merged, and nothing farther apart than the tolerance is: a
+//     real gap stays open;
+//  2. faces with a repeated corner or no area removed; duplicate faces (same corners, same
+//     orientation) and opposite duplicates (same corners, reversed) removed, the first kept;
+//  3. non-manifold edges (more than two faces) resolved: around the edge the faces are paired
+//     into manifold sheets (consecutive faces around the edge that enclose the same side), the
+//     others get a border there; the surface is split along the edge;
+//  4. non-orientable components cut along the edges where the orientation of a breadth-first
+//     walk disagrees (a seam), so that every piece is orientable;
+//  5. vertices whose faces form several fans (non-manifold vertices, the ends of the cuts) split
+//     into one vertex per fan;
+//  6. connected components too small for the vertex budget (fewer than minComponentSamples
+//     expected samples, and less than keepAreaFraction of the area) dropped; none left throws
+//     InvalidInputError saying how many vertices would keep the largest.
+// An input with an out-of-range index or a non-finite coordinate is returned as it is, for the
+// strict check to refuse with its message.
+#include "mesh.h"
+#include "mesh_check.h"
+
+#include <string>
+#include <vector>
+
+namespace fieldcvt {
+
+struct RepairParams {
+    //! Welding distance as a fraction of the mean edge length of the input.
+    double weldTolerance = 1e-3;
+    //! Output vertex count the surface will be remeshed with; 0 = no component is dropped.
+    int vertexBudget = 0;
+    //! A component is dropped when it would get fewer samples than this (vertexBudget × its
+    //! share of the area): fewer samples than a tetrahedron's few make no surface of it.
+    double minComponentSamples = 8;
+    //! ... unless it holds at least this fraction of the area (kept, with a warning).
+    double keepAreaFraction = 0.01;
+};
+
+struct RepairReport {
+    int removedUnreferencedVertices = 0;
+    int mergedDuplicateVertices = 0;  //!< same coordinates as another vertex
+    int weldedVertices = 0;           //!< border vertices merged within the tolerance
+    int tJunctions = 0;               //!< border vertices inserted into a border edge
+    double weldDistance = 0;          //!< the tolerance in input units
+    int removedDegenerateFaces = 0;   //!< repeated corner (also after welding) or zero area
+    int removedDuplicateFaces = 0;    //!< same corners, same orientation as an earlier face
+    int removedOppositeFaces = 0;     //!< same corners, opposite orientation
+    int nonManifoldEdges = 0;         //!< edges with more than two faces, split
+    int nonOrientableComponents = 0;  //!< components cut so that each piece is orientable
+    int seamEdges = 0;                //!< edges cut for that
+    int splitVertices = 0;            //!< vertices split into one vertex per fan
+    int addedVertexCopies = 0;        //!< copies added by those splits
+    int droppedComponents = 0;        //!< too small for the vertex budget
+    double droppedArea = 0;           //!< their area, input units
+    double droppedAreaFraction = 0;   //!< their share of the total area
+    int keptSmallComponents = 0;      //!< too small for the budget but over keepAreaFraction
+    bool skipped = false;             //!< bad indices or coordinates: left to the strict check
+    std::vector<std::string> notes;   //!< one line per step that changed something
+    //! Per input vertex: its index in the repaired mesh, -1 if removed.
+    std::vector<int> vertexMap;
+};
+
+//! The repaired copy of `input` (see the top of this file).
+TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairReport& report);
+
+//! repairMesh, then prepareInput on the result (without its exact-duplicate merge, which would
+//! undo the splits); `input` of InputReport::cleanIndex is the original input. Repair notes
+//! come first in InputReport::notes.
+TriMesh repairAndPrepare(const TriMesh& input, const RepairParams& params, RepairReport& repair,
+                         InputReport& report);
+
+}  // namespace fieldcvt
