@@ -2,7 +2,7 @@
 // A drawable picture of a 6-RoSy field for MeshLab: an edge mesh (vertices + edges, no faces)
 // with three segments through each drawn vertex along the six field directions. Presentation
 // only: the field itself comes from the core (fieldcvt::computeField).
-#include <common/ml_mesh_type.h>
+#include "meshlab_types.h"
 
 #include "field.h"
 #include "mesh.h"

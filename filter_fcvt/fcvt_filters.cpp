@@ -1,5 +1,6 @@
-#include "filter_fcvt.h"
+#include "fcvt_filters.h"
 
+#include <common/GLLogStream.h>
 #include <vcg/complex/allocate.h>
 
 #include <algorithm>
@@ -13,11 +14,16 @@
 
 #include "closest_point.h"
 #include "errors.h"
+#include "field.h"
 #include "field_drawing.h"
 #include "mesh_check.h"
 #include "mesh_convert.h"
 #include "metrics.h"
+#include "progress.h"
+#include "remesh.h"
 #include "valence_colour.h"
+
+namespace fcvt_plugin {
 
 namespace {
 
@@ -291,39 +297,126 @@ void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVe
     }
 }
 
-}  // namespace
+// The parameter declarations below read like both MeshLabs' own (par.addParam(RichInt(...)));
+// these build the neutral ParamDef the glue turns into its MeshLab's Rich* parameters.
+struct ParamList {
+    std::vector<ParamDef> defs;
+    void addParam(ParamDef p) { defs.push_back(std::move(p)); }
+};
 
-FilterFcvtPlugin::FilterFcvtPlugin()
+ParamDef makeParam(ParamDef::Type type, const char* name, double value, const QString& label,
+                   const QString& tooltip)
 {
-    typeList << FP_FCVT_REMESH << FP_FCVT_FIELD << FP_FCVT_QUALITY;
-    for (FilterIDType tt : types())
-        actionList << new QAction(filterName(tt), this);
+    ParamDef p;
+    p.type = type;
+    p.name = name;
+    p.value = value;
+    p.label = label;
+    p.tooltip = tooltip;
+    return p;
+}
+ParamDef RichInt(const char* name, int value, const QString& label, const QString& tooltip)
+{
+    return makeParam(ParamDef::Int, name, value, label, tooltip);
+}
+ParamDef RichFloat(const char* name, float value, const QString& label, const QString& tooltip)
+{
+    return makeParam(ParamDef::Float, name, double(value), label, tooltip);
+}
+ParamDef RichBool(const char* name, bool value, const QString& label, const QString& tooltip)
+{
+    return makeParam(ParamDef::Bool, name, value ? 1 : 0, label, tooltip);
+}
+ParamDef RichEnum(const char* name, int value, const QStringList& labels, const QString& label,
+                  const QString& tooltip)
+{
+    ParamDef p = makeParam(ParamDef::Enum, name, value, label, tooltip);
+    p.enumLabels = labels;
+    return p;
+}
+ParamDef RichAbsPerc(const char* name, float value, float min, float max, const QString& label,
+                     const QString& tooltip)
+{
+    ParamDef p = makeParam(ParamDef::AbsPerc, name, double(value), label, tooltip);
+    p.min = double(min);
+    p.max = double(max);
+    return p;
+}
+ParamDef RichMesh(const char* name, const MeshModel*, const MeshDocument*, const QString& label,
+                  const QString& tooltip)
+{
+    return makeParam(ParamDef::Mesh, name, 0, label, tooltip);
 }
 
-QString FilterFcvtPlugin::pluginName() const
+//! One filter run: the typed bodies of the three filters, with the plugin's log.
+class FilterRun {
+public:
+    explicit FilterRun(FilterLog& log) : log_(log) {}
+
+    bool applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
+    bool applyField(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
+    bool applyQuality(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
+
+private:
+    //! What the remeshing filter takes from the input layer besides the geometry.
+    struct RemeshInputs {
+        bool densityFromQuality = false;  //!< adaptive: ρ = per-vertex quality
+        bool featuresFromSelection = false;  //!< feature lines = border of the face selection
+        bool colorIrregular = false;      //!< colour the output's vertices by valence
+    };
+    //! The typed body of "Remeshing: Field-Aligned CVT (FCVT)".
+    bool remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params, const RemeshInputs& inputs,
+                    vcg::CallBackPos* cb);
+    //! The typed body of "Remeshing Quality Report (FCVT)" (`reference` null: no distances).
+    bool qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular, vcg::CallBackPos* cb);
+    //! The typed body of "Compute 6-RoSy Field".
+    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, vcg::CallBackPos* cb);
+    //! Fails the filter: throws FilterFailure(message), which the glue reports.
+    [[noreturn]] bool fail(const QString& message) { throw FilterFailure(message); }
+    //! The current layer if it holds faces; otherwise fails.
+    MeshModel* currentTriangleLayer(MeshDocument& md);
+    void logReport(const fieldcvt::RemeshResult& result, const QString& layerName);
+
+    void Log(const std::string& text) { log_.info(QString::fromStdString(text)); }
+    void Log(GLLogStream::Levels level, const std::string& text)
+    {
+        if (level == GLLogStream::WARNING)
+            log_.warning(QString::fromStdString(text));
+        else
+            log_.info(QString::fromStdString(text));
+    }
+
+    FilterLog& log_;
+};
+
+void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, ParamList& par);
+
+}  // namespace
+
+QString pluginName()
 {
     return "FilterFCVT";
 }
 
-QString FilterFcvtPlugin::filterName(FilterIDType filter) const
+QString filterName(FilterId filter)
 {
     switch (filter) {
-    case FP_FCVT_REMESH:
+    case kRemesh:
         // Frozen: the key of .mlx scripts.
         return "Remeshing: Field-Aligned CVT (FCVT)";
-    case FP_FCVT_FIELD:
+    case kField:
         return "Compute 6-RoSy Field";
-    case FP_FCVT_QUALITY:
+    case kQuality:
         return "Remeshing Quality Report (FCVT)";
     default:
         return QString();
     }
 }
 
-QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
+QString filterInfo(FilterId filter)
 {
     switch (filter) {
-    case FP_FCVT_REMESH:
+    case kRemesh:
         return "Isotropic remeshing by a Centroidal Voronoi Tessellation restricted to the surface, "
                "optionally aligned to a 6-RoSy direction field (lambda &gt; 0). The samples are "
                "optimised with L-BFGS on the exact restricted Voronoi diagram, and the output is its "
@@ -347,7 +440,7 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "so: no faces, NaN/Inf coordinates, bad indices. With <i>repair</i> off, "
                "non-manifold edges and non-orientable components are refused as before and every "
                "component is kept.";
-    case FP_FCVT_FIELD:
+    case kField:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
                "boundaries and sharp edges, or the maximal / minimal principal-curvature "
@@ -356,7 +449,7 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "number of singularities, and adds a layer \"6-RoSy field\" that draws the six "
                "directions at each vertex (a uniform subset on meshes over 20000 vertices) as "
                "line segments. The geometry of the current mesh is unchanged.";
-    case FP_FCVT_QUALITY:
+    case kQuality:
         return "Writes the remeshing quality figures of the current mesh to the log, as in Table 2 "
                "of <b>\"Field-Aligned Isotropic Surface Remeshing\"</b>: Q_min and Q_avg (triangle "
                "quality 2&radic;3&middot;area / (half-perimeter &middot; longest edge), 1 for an "
@@ -375,59 +468,71 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
     }
 }
 
-MeshFilterInterface::FilterClass FilterFcvtPlugin::getClass(QAction* a)
+FilterKind filterKind(FilterId filter)
 {
-    switch (ID(a)) {
-    case FP_FCVT_REMESH:
-        return MeshFilterInterface::Remeshing;
-    case FP_FCVT_FIELD:
-        return MeshFilterInterface::Normal;
-    case FP_FCVT_QUALITY:
-        return FilterClass(MeshFilterInterface::Measure | MeshFilterInterface::VertexColoring);
+    switch (filter) {
+    case kRemesh:
+        return FilterKind::Remeshing;
+    case kField:
+        return FilterKind::Normal;
+    case kQuality:
     default:
-        return MeshFilterInterface::Generic;
+        return FilterKind::MeasureAndVertexColouring;
     }
 }
 
-MeshFilterInterface::FILTER_ARITY FilterFcvtPlugin::filterArity(QAction*) const
-{
-    return SINGLE_MESH;
-}
-
-int FilterFcvtPlugin::getRequirements(QAction*)
-{
-    return MeshModel::MM_NONE;
-}
-
-int FilterFcvtPlugin::getPreConditions(QAction*) const
+int preConditions(FilterId)
 {
     return MeshModel::MM_FACENUMBER;
 }
 
-int FilterFcvtPlugin::postCondition(QAction* a) const
+int postCondition(FilterId filter)
 {
     // The input layer's geometry and standard data are not modified (the field filter only adds
     // the custom attribute `rosy`); results are new layers. The quality report may colour the
     // current layer's vertices.
-    return ID(a) == FP_FCVT_QUALITY ? int(MeshModel::MM_VERTCOLOR) : int(MeshModel::MM_NONE);
+    return filter == kQuality ? int(MeshModel::MM_VERTCOLOR) : int(MeshModel::MM_NONE);
 }
 
-void FilterFcvtPlugin::initParameterSet(QAction* a, MeshModel& m, RichParameterList& par)
+std::vector<ParamDef> parameters(FilterId filter, const MeshModel* current)
 {
-    addParameters(a, nullptr, &m, par);
+    ParamList par;
+    addParameters(filter, nullptr, current, par);
+    return par.defs;
 }
 
-void FilterFcvtPlugin::initParameterSet(QAction* a, MeshDocument& md, RichParameterList& par)
+void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log,
+                 Callback* cb)
 {
-    addParameters(a, &md, md.mm(), par);
+    FilterRun run(log);
+    switch (filter) {
+    case kRemesh:
+        run.applyRemesh(md, par, cb);
+        break;
+    case kField:
+        run.applyField(md, par, cb);
+        break;
+    case kQuality:
+        run.applyQuality(md, par, cb);
+        break;
+    default:
+        throw FilterFailure("FCVT: unknown filter");
+    }
 }
 
-void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m, RichParameterList& par)
+QString unexpectedFailure(const std::exception* e)
+{
+    return e != nullptr ? QString("FCVT: %1").arg(QString::fromUtf8(e->what())) : QString("FCVT: unknown error");
+}
+
+namespace {
+
+void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, ParamList& par)
 {
     const int vertexCountDefault = defaultVertexCount(m);
     const float diagonal = bboxDiagonal(m);
-    switch (ID(a)) {
-    case FP_FCVT_REMESH: {
+    switch (a) {
+    case kRemesh: {
         // Core defaults are the single source of truth for everything but vertexCount.
         const fieldcvt::RemeshParams defaults;
         par.addParam(RichInt(kVertexCount, vertexCountDefault, "Target vertices",
@@ -490,7 +595,7 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
                               "which refuses non-manifold edges and non-orientable pieces."));
         break;
     }
-    case FP_FCVT_FIELD: {
+    case kField: {
         const fieldcvt::FieldParams defaults;
         par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.source),
                               fieldSourceLabels(kComputedFieldSources), "Field source",
@@ -501,7 +606,7 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
                              "the same seed gives the same field."));
         break;
     }
-    case FP_FCVT_QUALITY: {
+    case kQuality: {
         // The default reference is the measured layer itself, which means "no distances".
         const char* description = "Reference layer (distances)";
         const char* tooltip = "The layer d_RMS and d_H are measured against (e.g. the input of the "
@@ -521,30 +626,7 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
     }
 }
 
-bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par,
-                                   vcg::CallBackPos* cb)
-{
-    // Nothing may escape into MeshLab: the GUI catches only std::bad_alloc and meshlabserver
-    // nothing at all, so an exception would terminate the application.
-    try {
-        switch (ID(a)) {
-        case FP_FCVT_REMESH:
-            return applyRemesh(md, par, cb);
-        case FP_FCVT_FIELD:
-            return applyField(md, par, cb);
-        case FP_FCVT_QUALITY:
-            return applyQuality(md, par, cb);
-        default:
-            return fail("FCVT: unknown filter");
-        }
-    } catch (const std::exception& e) {
-        return fail(QString("FCVT: %1").arg(QString::fromUtf8(e.what())));
-    } catch (...) {
-        return fail("FCVT: unknown error");
-    }
-}
-
-bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& par,
+bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
                                    vcg::CallBackPos* cb)
 {
     int vertexCount = par.getInt(kVertexCount);
@@ -619,7 +701,7 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
     return remeshFcvt(md, params, inputs, cb);
 }
 
-bool FilterFcvtPlugin::applyQuality(MeshDocument& md, const RichParameterList& par,
+bool FilterRun::applyQuality(MeshDocument& md, const ParamValues& par,
                                     vcg::CallBackPos* cb)
 {
     MeshModel* mesh = currentTriangleLayer(md);
@@ -629,7 +711,7 @@ bool FilterFcvtPlugin::applyQuality(MeshDocument& md, const RichParameterList& p
     return qualityReport(*mesh, reference == mesh ? nullptr : reference, par.getBool(kColorIrregular), cb);
 }
 
-bool FilterFcvtPlugin::applyField(MeshDocument& md, const RichParameterList& par,
+bool FilterRun::applyField(MeshDocument& md, const ParamValues& par,
                                   vcg::CallBackPos* cb)
 {
     const int fieldSource = par.getEnum(kFieldSource);
@@ -647,7 +729,7 @@ bool FilterFcvtPlugin::applyField(MeshDocument& md, const RichParameterList& par
     return computeRosyField(md, params, cb);
 }
 
-MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
+MeshModel* FilterRun::currentTriangleLayer(MeshDocument& md)
 {
     MeshModel* input = md.mm();
     if (input == nullptr) {
@@ -661,7 +743,7 @@ MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
     return input;
 }
 
-bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
+bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
                                   const RemeshInputs& inputs, vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
@@ -781,7 +863,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
                 rosy[i] = toPoint3m(result.outputDirections[i]);
         }
         output->cm.Tr = input->cm.Tr;
-        output->UpdateBoxAndNormals();
+        updateBoxAndNormals(*output);
         KeptData keep;
         keep.colour = input->hasDataMask(MeshModel::MM_VERTCOLOR);
         keep.quality = input->hasDataMask(MeshModel::MM_VERTQUALITY);
@@ -813,7 +895,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
                  applyValenceColours(result.mesh, *output))
                     .toStdString());
     } catch (...) {
-        md.delMesh(output);
+        removeLayer(md, output);
         md.setCurrentMesh(input->id());
         throw;
     }
@@ -853,7 +935,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     return true;
 }
 
-bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
+bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
                                         vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
@@ -892,7 +974,7 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
         drawing->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_COLOR);
         drawing->cm.Tr = input->cm.Tr;
     } catch (...) {
-        md.delMesh(drawing);
+        removeLayer(md, drawing);
         md.setCurrentMesh(input->id());
         throw;
     }
@@ -931,7 +1013,7 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
     return true;
 }
 
-bool FilterFcvtPlugin::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular,
+bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular,
                                      vcg::CallBackPos* cb)
 {
     if (reference != nullptr && reference->cm.fn == 0)
@@ -984,14 +1066,7 @@ bool FilterFcvtPlugin::qualityReport(MeshModel& mesh, MeshModel* reference, bool
     return true;
 }
 
-bool FilterFcvtPlugin::fail(const QString& message)
-{
-    errorMessage = message;
-    Log(GLLogStream::WARNING, message.toStdString());
-    return false;
-}
-
-void FilterFcvtPlugin::logReport(const fieldcvt::RemeshResult& r, const QString& layerName)
+void FilterRun::logReport(const fieldcvt::RemeshResult& r, const QString& layerName)
 {
     const fieldcvt::QualityMetrics& m = r.metrics;
     Log(QString("FCVT: new layer '%1': %2 vertices, %3 faces, %4 energy evaluations")
@@ -1049,4 +1124,6 @@ void FilterFcvtPlugin::logReport(const fieldcvt::RemeshResult& r, const QString&
         Log(GLLogStream::WARNING, "FCVT warning: " + w);
 }
 
-MESHLAB_PLUGIN_NAME_EXPORTER(FilterFcvtPlugin)
+
+}  // namespace
+}  // namespace fcvt_plugin
