@@ -10,5 +10,6 @@ int runRemesh(const std::vector<std::string>& args);
 int runMetrics(const std::vector<std::string>& args);
 int runField(const std::vector<std::string>& args);
 int runCompare(const std::vector<std::string>& args);
+int runConvert(const std::vector<std::string>& args);
 
 }  // namespace fieldcvt::cli

@@ -21,6 +21,7 @@ const char* const usage =
     "  field IN OUT.ply [options]             the 6-RoSy direction field of IN and its singularities\n"
     "  compare IN --vertices N [options]      CVT vs FCVT on IN, one row per method (paper's Table 2)\n"
     "  metrics MESH [--ref INPUT] [--json]    quality metrics and topology of a mesh\n"
+    "  convert IN OUT                         IN in OUT's format (by extension), after remesh's input checks\n"
     "\n"
     "Options:\n"
     "  -h, --help     show this help; 'fcvt <command> --help' shows a command's options\n"
@@ -54,6 +55,7 @@ int run(const std::vector<std::string>& args)
     if (command == "metrics") return runMetrics(rest);
     if (command == "field") return runField(rest);
     if (command == "compare") return runCompare(rest);
+    if (command == "convert") return runConvert(rest);
     throw UsageError("unknown command '" + command + "' (try 'fcvt --help')");
 }
 

@@ -1,7 +1,11 @@
 #include "fcvt_filters.h"
 
-#include <common/GLLogStream.h>
 #include <vcg/complex/allocate.h>
+
+#include <QApplication>
+#include <QFileInfo>
+#include <QPointer>
+#include <QTimer>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +20,7 @@
 #include "errors.h"
 #include "field.h"
 #include "field_drawing.h"
+#include "log_text.h"
 #include "mesh_check.h"
 #include "mesh_convert.h"
 #include "metrics.h"
@@ -26,6 +31,15 @@
 namespace fcvt_plugin {
 
 namespace {
+
+using fcvt_plugin::num;
+using fcvt_plugin::parameterLabel;
+using fcvt_plugin::parameterName;
+using fcvt_plugin::plainLogText;
+using fcvt_plugin::qualityText;
+using fcvt_plugin::singularitySummary;
+using fcvt_plugin::stageLabel;
+using fcvt_plugin::topologyText;
 
 // Upper end of the default vertexCount: the paper's typical output size (Table 1), and a run
 // of a few seconds on two cores; inputs with fewer vertices default to their own count.
@@ -48,6 +62,33 @@ float bboxDiagonal(const MeshModel* m)
 // The sizeMode enum (index = value in .mlx scripts, frozen).
 enum SizeMode { kSizeByVertexCount = 0, kSizeByTargetLength = 1 };
 const QStringList kSizeModeLabels = {"vertex count", "target edge length"};
+
+// The adaptive enum, the density source (index = value in .mlx scripts, frozen). Scripts written
+// before it was an enum carry adaptive as a bool: false = uniform, true = vertex quality.
+enum DensityChoice { kDensityUniform = 0, kDensityCurvature = 1, kDensityVertexQuality = 2 };
+const QStringList kDensityLabels = {"uniform", "curvature", "vertex quality"};
+
+// A parameter that a script may lack (added after the first release): its value, or `fallback`.
+bool boolParam(const ParamValues& par, const char* key, bool fallback)
+{
+    return par.hasParameter(key) ? par.getBool(key) : fallback;
+}
+
+double floatParam(const ParamValues& par, const char* key, double fallback)
+{
+    return par.hasParameter(key) ? double(par.getFloat(key)) : fallback;
+}
+
+// The density source: the adaptive enum, or the bool of scripts from before it was one
+// (true = vertex quality); uniform when the script has neither.
+int densityChoice(const ParamValues& par)
+{
+    if (!par.hasParameter(kAdaptive))
+        return kDensityUniform;
+    if (par.isBool(kAdaptive))
+        return par.getBool(kAdaptive) ? kDensityVertexQuality : kDensityUniform;
+    return par.getEnum(kAdaptive);
+}
 
 // Above this a target edge length is taken for a mistake (hours of run time, gigabytes).
 constexpr double kMaxVerticesFromLength = 5e6;
@@ -134,67 +175,17 @@ CMeshO::PerVertexAttributeHandle<Point3m> pointAttribute(CMeshO& cm, const char*
     return vcg::tri::Allocator<CMeshO>::AddPerVertexAttribute<Point3m>(cm, name);
 }
 
-// Singularity count and index sum (in sixths of a turn; 6·χ on a closed surface).
-QString singularitySummary(const std::vector<fieldcvt::Singularity>& singularities)
+// The name of the remeshing's new layer: the input's label without its extension and with no
+// dot, then "_FCVT" ("bunny.off" -> "bunny_FCVT"). MeshLab's layer list shows a label up to its
+// last dot (QFileInfo::completeBaseName), so "bunny.off FCVT" read "bunny", like its input; a
+// rerun gets "bunny_FCVT(1)" from MeshLab's own disambiguation.
+QString outputLayerName(const QString& inputLabel)
 {
-    long long sum = 0;
-    for (const fieldcvt::Singularity& s : singularities)
-        sum += s.index;
-    return QString("%1 singularities (index sum %2/6)").arg(singularities.size()).arg(sum);
-}
-
-// Log text for a figure; NaN (distance not computed) shown as "n/a".
-QString num(double v, int precision = 4)
-{
-    return std::isfinite(v) ? QString::number(v, 'g', precision) : QString("n/a");
-}
-
-// The core's stage names as the status bar shows them.
-QString stageLabel(const std::string& stage)
-{
-    static const std::map<std::string, const char*> labels = {
-        {"prepare", "checking the input"},
-        {"field", "computing the 6-RoSy field"},
-        {"sampling", "sampling"},
-        {"lloyd", "Lloyd warm-up"},
-        {"cvt", "CVT iterations"},
-        {"boundary", "placing samples on the boundary"},
-        {"features", "placing samples on feature lines"},
-        {"fcvt", "FCVT iterations"},
-        {"rdt", "extracting the mesh"},
-        {"valence", "valence optimisation"},
-        {"metrics", "measuring quality"},
-        {"done", "done"},
-    };
-    // "cvt 12/65": the stage's label, then its step.
-    const std::string key = fieldcvt::stageName(stage);
-    const QString step = QString::fromStdString(stage.substr(key.size()));
-    const auto it = labels.find(key);
-    return QString("FCVT: ") + (it != labels.end() ? QString(it->second) : QString::fromStdString(key)) + step;
-}
-
-// The Table 2 figures of computeQuality as one log line (distances apart).
-QString qualityText(const fieldcvt::QualityMetrics& m)
-{
-    return QString("Q_min %1, Q_avg %2, theta_min %3 deg, mean theta_min %4 deg, theta_max %5 deg, "
-                   "%theta<30 %6, %theta>90 %7, V6% %8")
-        .arg(num(m.qMin))
-        .arg(num(m.qAvg))
-        .arg(num(m.thetaMin))
-        .arg(num(m.thetaMinAvg))
-        .arg(num(m.thetaMax))
-        .arg(num(m.pctLt30))
-        .arg(num(m.pctGt90))
-        .arg(num(m.v6Pct));
-}
-
-QString topologyText(const fieldcvt::TopologySummary& t)
-{
-    return QString("genus %1, %2 boundary loops, %3 components%4")
-        .arg(t.genus)
-        .arg(t.boundaryLoops)
-        .arg(t.components)
-        .arg(t.manifold() ? "" : ", NON-MANIFOLD");
+    QString base = QFileInfo(inputLabel).completeBaseName();
+    if (base.isEmpty())
+        base = inputLabel;
+    base.replace(QChar('.'), QChar('_'));
+    return base + "_FCVT";
 }
 
 // Distance samples per mesh: dense enough for a Hausdorff figure at the meshes' resolution,
@@ -216,15 +207,7 @@ QString applyValenceColours(const fieldcvt::TriMesh& mesh, MeshModel& layer)
             v.C() = c.colours[i++];
     if (i != c.colours.size())
         throw fieldcvt::Error("valence colours: vertex count mismatch");
-    return QString("interior vertices: %1 of valence < 6 (blue), %2 = 6 (white), %3 > 6 (pink); "
-                   "boundary vertices (target 4): %4 < 4 (blue), %5 = 4 (white), %6 > 4 (pink)%7")
-        .arg(c.interiorLow)
-        .arg(c.interiorRegular)
-        .arg(c.interiorHigh)
-        .arg(c.boundaryLow)
-        .arg(c.boundaryRegular)
-        .arg(c.boundaryHigh)
-        .arg(c.unused > 0 ? QString("; %1 vertices on no face (grey)").arg(c.unused) : QString());
+    return fcvt_plugin::valenceColourText(c);
 }
 
 // Feature lines from a face selection: the edges between a selected and an unselected face
@@ -369,22 +352,21 @@ private:
                     vcg::CallBackPos* cb);
     //! The typed body of "Remeshing Quality Report (FCVT)" (`reference` null: no distances).
     bool qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular, vcg::CallBackPos* cb);
-    //! The typed body of "Compute 6-RoSy Field".
-    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, vcg::CallBackPos* cb);
+    //! The typed body of "Compute 6-RoSy Field" (at most `maxCrosses` crosses drawn).
+    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, int maxCrosses,
+                          vcg::CallBackPos* cb);
+    //! Takes back the GUI's "modified" mark on layer `layerId` after this filter (see the .cpp).
+    static void keepUnmodified(MeshDocument& md, int layerId);
     //! Fails the filter: throws FilterFailure(message), which the glue reports.
     [[noreturn]] bool fail(const QString& message) { throw FilterFailure(message); }
     //! The current layer if it holds faces; otherwise fails.
     MeshModel* currentTriangleLayer(MeshDocument& md);
     void logReport(const fieldcvt::RemeshResult& result, const QString& layerName);
 
-    void Log(const std::string& text) { log_.info(QString::fromStdString(text)); }
-    void Log(GLLogStream::Levels level, const std::string& text)
-    {
-        if (level == GLLogStream::WARNING)
-            log_.warning(QString::fromStdString(text));
-        else
-            log_.info(QString::fromStdString(text));
-    }
+    //! Log lines (info / warning, shown red in the GUI) through plainLogText(), so that MeshLab's
+    //! HTML log shows all of their text.
+    void logInfo(const QString& line);
+    void logWarning(const QString& line);
 
     FilterLog& log_;
 };
@@ -417,38 +399,23 @@ QString filterInfo(FilterId filter)
 {
     switch (filter) {
     case kRemesh:
-        return "Isotropic remeshing by a Centroidal Voronoi Tessellation restricted to the surface, "
-               "optionally aligned to a 6-RoSy direction field (lambda &gt; 0). The samples are "
-               "optimised with L-BFGS on the exact restricted Voronoi diagram, and the output is its "
-               "dual (the restricted Delaunay triangulation), placed in a new layer; the input layer "
-               "is kept. Quality metrics (Q_min, Q_avg, angles, V6%, d_RMS, d_H) and per-stage "
-               "times are written to the log.<br>"
-               "See: <b>\"Field-Aligned Isotropic Surface Remeshing\"</b>, Computer Graphics "
-               "Forum.<br>"
-               "The field that the edges follow (fieldSource) is an extrinsically smooth 6-RoSy "
-               "field, a principal-curvature direction, or the per-vertex attribute <i>rosy</i> of "
-               "the input (e.g. from <i>Compute 6-RoSy Field</i>). The output layer carries the "
-               "field interpolated at its vertices as the per-vertex attribute <i>rosy</i>.<br>"
-               "Input repair (<i>repair</i>, on by default; every step counted in the log): "
-               "vertices at the same coordinates, and border vertices closer than 0.001 of the "
-               "mean edge length (cracks, seams, T-junctions), are welded, never farther apart; "
-               "duplicate and opposite duplicate faces are removed; non-manifold edges are split "
-               "into manifold sheets, non-manifold vertices into one vertex per fan; a "
-               "non-orientable piece is cut along a seam into orientable ones; components that "
-               "would get fewer than 8 samples and hold under 1% of the area are dropped (if none "
-               "is left the filter fails and says how many vertices are needed). Refused even "
-               "so: no faces, NaN/Inf coordinates, bad indices. With <i>repair</i> off, "
-               "non-manifold edges and non-orientable components are refused as before and every "
-               "component is kept.";
+        // Kept short: MeshLab shows this text above the parameters, and a long one pushed the
+        // last parameter out of the dialog's default size. The details are in the tooltips.
+        return "Isotropic remeshing into a new layer: a Centroidal Voronoi Tessellation restricted to "
+               "the surface, its edges aligned to a 6-RoSy direction field (Field weight &gt; 0), "
+               "then valence optimisation. Quality metrics and stage times go to the log. See "
+               "<b>\"Field-Aligned Isotropic Surface Remeshing\"</b>, Computer Graphics Forum. "
+               "The input is repaired first (<i>repair</i>, on by default; see its tooltip).";
     case kField:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
                "boundaries and sharp edges, or the maximal / minimal principal-curvature "
                "direction. Stores one representative direction per vertex as the per-vertex "
-               "attribute <i>rosy</i> (vertices dropped by the input check get (0,0,0)), logs the "
-               "number of singularities, and adds a layer \"6-RoSy field\" that draws the six "
-               "directions at each vertex (a uniform subset on meshes over 20000 vertices) as "
-               "line segments. The geometry of the current mesh is unchanged.";
+               "attribute <i>rosy</i> (vertices on no face get (0,0,0)), logs the number of "
+               "singularities, and adds a layer \"6-RoSy field\" that draws the six directions as "
+               "a cross of thin strips, lifted a little off the surface, at each vertex (at most "
+               "'Crosses drawn' of them, on a uniform grid). The geometry of the current mesh is "
+               "unchanged.";
     case kQuality:
         return "Writes the remeshing quality figures of the current mesh to the log, as in Table 2 "
                "of <b>\"Field-Aligned Isotropic Surface Remeshing\"</b>: Q_min and Q_avg (triangle "
@@ -535,58 +502,65 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
     case kRemesh: {
         // Core defaults are the single source of truth for everything but vertexCount.
         const fieldcvt::RemeshParams defaults;
-        par.addParam(RichInt(kVertexCount, vertexCountDefault, "Target vertices",
+        // The dialog's order: what most runs set first, the optimiser's knobs after. Scripts
+        // match parameters by name (RichParameterList::getParameterByName), so the order is free;
+        // a new parameter still goes at the end, where meshlabserver adds a missing one.
+        par.addParam(RichInt(kVertexCount, vertexCountDefault, parameterLabel(kVertexCount),
                              "Number of output vertices (Voronoi samples), at least 4. Default: "
                              "the input's vertex count, capped at 5000."));
-        par.addParam(RichFloat(kLambda, float(defaults.lambda), "Field weight (lambda)",
-                               "Weight of the field-alignment energy; 0 gives a pure isotropic "
-                               "CVT."));
-        par.addParam(RichInt(kCvtIterations, defaults.cvtIterations, "CVT iterations",
-                             "L-BFGS iterations on the CVT energy (the paper uses 130)."));
-        par.addParam(RichInt(kFcvtIterations, defaults.fcvtIterations, "FCVT iterations",
-                             "L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
-                             "iterations."));
-        par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.fieldSource),
-                              fieldSourceLabels(kAllFieldSources), "Field source",
-                              "The 6-RoSy field the edges are aligned to: the extrinsically smooth "
-                              "field, the max or min principal-curvature direction, or the "
-                              "per-vertex Point3 attribute 'rosy' of the input layer."));
-        par.addParam(RichInt(kSeed, int(defaults.seed), "Random seed",
-                             "Seed of the initial sampling (>= 0); the same seed gives the same "
-                             "output."));
-        par.addParam(RichEnum(kSizeMode, kSizeByVertexCount, kSizeModeLabels, "Size by",
+        par.addParam(RichEnum(kSizeMode, kSizeByVertexCount, kSizeModeLabels, parameterLabel(kSizeMode),
                               "How the output size is given: by the number of vertices (Target "
                               "vertices) or by the edge length (Target edge length), converted to "
                               "a vertex count through the surface area."));
         par.addParam(RichAbsPerc(kTargetLength, 0.01f * diagonal, 0.0f, diagonal,
-                                 "Target edge length",
+                                 parameterLabel(kTargetLength),
                                  "Wanted edge length in world units (used when Size by is 'target "
                                  "edge length'); the vertex count is about 2 * area / (sqrt(3) * "
                                  "length^2). Default: 1% of the bounding-box diagonal."));
-        // Added after the first release: appended, so older scripts keep their order.
-        par.addParam(RichBool(kValenceOptimization, defaults.valenceOptimization,
-                              "Valence optimisation",
-                              "After the extraction, edge flips, collapses and splits that bring "
-                              "vertices to valence 6 (4 on boundaries), then a relaxation that "
-                              "realigns the edges (paper section 4.4)."));
+        par.addParam(RichEnum(kAdaptive, kDensityUniform, kDensityLabels, parameterLabel(kAdaptive),
+                              "Where the vertices go, the vertex count unchanged: uniform; more where "
+                              "the surface bends (curvature, graded by Curvature gradation); or more "
+                              "where the input's per-vertex quality is higher (every value must be "
+                              "finite and above 0)."));
+        par.addParam(RichFloat(kGradation, float(defaults.gradation), parameterLabel(kGradation),
+                               "With Vertex density 'curvature': how strongly curvature raises the "
+                               "density (0 or more; 0 = uniform, 1 = edges up to about 3 times "
+                               "shorter where the surface bends most)."));
         par.addParam(RichFloat(kFeatureAngle, float(defaults.featureAngleDegrees),
-                               "Feature angle (deg)",
+                               parameterLabel(kFeatureAngle),
                                "Input edges whose faces meet at a dihedral angle of at least this "
                                "many degrees are sharp features that the output follows; 0 = no "
                                "sharp features (0..180)."));
-        par.addParam(RichBool(kFeatureSelection, false, "Features from selection",
-                              "Also treat the border of the input's face selection (edges between a "
-                              "selected and an unselected face) as feature lines."));
-        par.addParam(RichBool(kAdaptive, false, "Adaptive (density from vertex quality)",
-                              "Sample density from the input's per-vertex quality (every value "
-                              "must be finite and > 0): more vertices where the quality is "
-                              "higher, the vertex count unchanged. Off: uniform density."));
-        par.addParam(RichBool(kColorIrregular, false, "Colour irregular vertices",
+        par.addParam(RichBool(kValenceOptimization, defaults.valenceOptimization,
+                              parameterLabel(kValenceOptimization),
+                              "After the extraction, edge flips, collapses and splits that bring "
+                              "vertices to valence 6 (4 on boundaries), then a relaxation that "
+                              "realigns the edges (paper section 4.4)."));
+        par.addParam(RichBool(kColorIrregular, false, parameterLabel(kColorIrregular),
                               "Colour the output's vertices by valence: blue below 6 (4 on a "
                               "boundary), pink above, white at it. Replaces the colour carried "
                               "over from the input."));
-        // Appended (issue 17), so older scripts keep their order.
-        par.addParam(RichBool(kRepair, defaults.repair, "Repair the input",
+        par.addParam(RichFloat(kLambda, float(defaults.lambda), parameterLabel(kLambda),
+                               "Weight of the field-alignment energy; 0 gives a pure isotropic "
+                               "CVT."));
+        par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.fieldSource),
+                              fieldSourceLabels(kAllFieldSources), parameterLabel(kFieldSource),
+                              "The 6-RoSy field the edges are aligned to: the extrinsically smooth "
+                              "field, the max or min principal-curvature direction, or the "
+                              "per-vertex Point3 attribute 'rosy' of the input layer."));
+        par.addParam(RichInt(kSeed, int(defaults.seed), parameterLabel(kSeed),
+                             "Seed of the initial sampling (0 or more); the same seed gives the same "
+                             "output."));
+        par.addParam(RichInt(kCvtIterations, defaults.cvtIterations, parameterLabel(kCvtIterations),
+                             "L-BFGS iterations on the CVT energy (the paper uses 130)."));
+        par.addParam(RichInt(kFcvtIterations, defaults.fcvtIterations, parameterLabel(kFcvtIterations),
+                             "L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
+                             "iterations."));
+        par.addParam(RichBool(kFeatureSelection, false, parameterLabel(kFeatureSelection),
+                              "Also treat the border of the input's face selection (edges between a "
+                              "selected and an unselected face) as feature lines."));
+        // Added after issue 15's reordering (issue 17): at the end, like every new parameter.
+        par.addParam(RichBool(kRepair, defaults.repair, parameterLabel(kRepair),
                               "Before remeshing, weld coincident and nearly coincident border "
                               "vertices (cracks, seams, T-junctions), remove duplicate and opposite "
                               "faces, split non-manifold edges and vertices, cut non-orientable "
@@ -598,17 +572,21 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
     case kField: {
         const fieldcvt::FieldParams defaults;
         par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.source),
-                              fieldSourceLabels(kComputedFieldSources), "Field source",
+                              fieldSourceLabels(kComputedFieldSources), parameterLabel(kFieldSource),
                               "The extrinsically smooth 6-RoSy field (aligned to boundaries and "
                               "sharp edges), or the max or min principal-curvature direction."));
-        par.addParam(RichInt(kSeed, int(defaults.seed), "Random seed",
-                             "Seed of the random initial directions of the smooth field (>= 0); "
+        par.addParam(RichInt(kSeed, int(defaults.seed), parameterLabel(kSeed),
+                             "Seed of the random initial directions of the smooth field (0 or more); "
                              "the same seed gives the same field."));
+        par.addParam(RichInt(kMaxCrosses, kDefaultMaxCrosses, parameterLabel(kMaxCrosses),
+                             "The drawing layer shows the field as a cross at every vertex, or at "
+                             "one vertex per cell of a grid when the mesh has more vertices than "
+                             "this (at least 1)."));
         break;
     }
     case kQuality: {
         // The default reference is the measured layer itself, which means "no distances".
-        const char* description = "Reference layer (distances)";
+        const QString description = parameterLabel(kReferenceLayer);
         const char* tooltip = "The layer d_RMS and d_H are measured against (e.g. the input of the "
                               "remeshing). The current layer itself: no distances.";
         if (md != nullptr && m != nullptr)
@@ -616,7 +594,7 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
         else  // no document: a parameter without a mesh (only for completeness of the overload)
             par.addParam(RichMesh(kReferenceLayer, static_cast<MeshModel*>(nullptr), nullptr,
                                   description, tooltip));
-        par.addParam(RichBool(kColorIrregular, true, "Colour irregular vertices",
+        par.addParam(RichBool(kColorIrregular, true, parameterLabel(kColorIrregular),
                               "Colour the vertices by valence: blue below 6 (4 on a boundary), "
                               "pink above, white at it."));
         break;
@@ -638,51 +616,58 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
     const int sizeMode = par.getEnum(kSizeMode);
     const double targetLength = par.getAbsPerc(kTargetLength);
     if (sizeMode != kSizeByVertexCount && sizeMode != kSizeByTargetLength)
-        return fail(QString("FCVT: sizeMode must be 0..1 (got %1)").arg(sizeMode));
+        return fail(QString("FCVT: %1 must be 0 (vertex count) or 1 (target edge length), got %2")
+                        .arg(parameterName(kSizeMode))
+                        .arg(sizeMode));
     if (sizeMode == kSizeByTargetLength) {
         MeshModel* input = currentTriangleLayer(md);
         if (input == nullptr)
             return false;
         if (!(targetLength > 0) || !std::isfinite(targetLength))
-            return fail(QString("FCVT: targetLength must be a number > 0 (got %1)").arg(targetLength));
+            return fail(QString("FCVT: %1 must be a number above 0 (got %2)").arg(parameterName(kTargetLength)).arg(targetLength));
         const double area = surfaceArea(input->cm);
         // Equilateral triangulation of edge L: about 2 faces per vertex of area sqrt(3) L^2 / 4.
         const double wanted = 2.0 * area / (std::sqrt(3.0) * targetLength * targetLength);
         if (!std::isfinite(wanted) || wanted > kMaxVerticesFromLength)
-            return fail(QString("FCVT: targetLength %1 on a surface of area %2 would give %3 "
-                                "vertices, more than the maximum %4; choose a longer edge")
+            return fail(QString("FCVT: %1 %2 on a surface of area %3 would give %4 "
+                                "vertices, more than the maximum %5; choose a longer edge")
+                            .arg(parameterName(kTargetLength))
                             .arg(targetLength)
                             .arg(area)
                             .arg(wanted, 0, 'g', 4)
                             .arg(kMaxVerticesFromLength, 0, 'g', 4));
         const int fromLength = std::max(kMinVertices, int(std::lround(wanted)));
-        Log(QString("FCVT size: target edge length %1 on area %2 -> %3 vertices")
+        logInfo(QString("FCVT size: target edge length %1 on area %2 gives %3 vertices")
                 .arg(targetLength)
                 .arg(area)
-                .arg(fromLength)
-                .toStdString());
+                .arg(fromLength));
         vertexCount = fromLength;
     }
     if (vertexCount < kMinVertices)
-        return fail(QString("FCVT: vertexCount must be at least %1 (got %2)")
+        return fail(QString("FCVT: %1 must be at least %2 (got %3)")
+                        .arg(parameterName(kVertexCount))
                         .arg(kMinVertices)
                         .arg(vertexCount));
     if (!(lambda >= 0) || !std::isfinite(lambda))
-        return fail(QString("FCVT: lambda must be a finite number >= 0 (got %1)").arg(lambda));
+        return fail(QString("FCVT: %1 must be a finite number, 0 or more (got %2)").arg(parameterName(kLambda)).arg(lambda));
     if (cvtIterations < 0)
-        return fail(QString("FCVT: cvtIterations must be >= 0 (got %1)").arg(cvtIterations));
+        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kCvtIterations)).arg(cvtIterations));
     if (fcvtIterations < 0)
-        return fail(QString("FCVT: fcvtIterations must be >= 0 (got %1)").arg(fcvtIterations));
+        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kFcvtIterations)).arg(fcvtIterations));
     // A script may carry any integer as the enum value: MeshLab does not check the range.
     if (fieldSource < 0 || fieldSource >= kAllFieldSources)
-        return fail(QString("FCVT: fieldSource must be 0..%1 (got %2)")
+        return fail(QString("FCVT: %1 must be 0..%2 (got %3)")
+                        .arg(parameterName(kFieldSource))
                         .arg(kAllFieldSources - 1)
                         .arg(fieldSource));
     if (seed < 0)
-        return fail(QString("FCVT: seed must be >= 0 (got %1)").arg(seed));
-    const double featureAngle = par.getFloat(kFeatureAngle);
+        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kSeed)).arg(seed));
+    // Parameters added after the first release are read with their defaults when a script lacks
+    // them: MeshLab's GUI runs a script with the script's own list (MainWindow::runFilterScript).
+    const fieldcvt::RemeshParams defaults;
+    const double featureAngle = floatParam(par, kFeatureAngle, defaults.featureAngleDegrees);
     if (!(featureAngle >= 0 && featureAngle <= 180))
-        return fail(QString("FCVT: featureAngle must be 0..180 degrees, 0 = off (got %1)").arg(featureAngle));
+        return fail(QString("FCVT: %1 must be 0..180 degrees, 0 = off (got %2)").arg(parameterName(kFeatureAngle)).arg(featureAngle));
 
     fieldcvt::RemeshParams params;
     params.vertexCount = vertexCount;
@@ -691,13 +676,27 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
     params.fcvtIterations = fcvtIterations;
     params.fieldSource = kFieldSources[fieldSource].source;
     params.seed = static_cast<std::uint64_t>(seed);
-    params.valenceOptimization = par.getBool(kValenceOptimization);
+    params.valenceOptimization = boolParam(par, kValenceOptimization, defaults.valenceOptimization);
     params.featureAngleDegrees = featureAngle;
+    const int density = densityChoice(par);
+    if (density < kDensityUniform || density > kDensityVertexQuality)
+        return fail(QString("FCVT: %1 must be 0 (uniform), 1 (curvature) or 2 (vertex quality), got %2")
+                        .arg(parameterName(kAdaptive))
+                        .arg(density));
+    const double gradation = floatParam(par, kGradation, defaults.gradation);
+    if (!(gradation >= 0) || !std::isfinite(gradation))
+        return fail(QString("FCVT: %1 must be a finite number, 0 or more (got %2)")
+                        .arg(parameterName(kGradation))
+                        .arg(gradation));
+    if (density == kDensityCurvature) {
+        params.density = fieldcvt::DensitySource::Curvature;
+        params.gradation = gradation;
+    }
     RemeshInputs inputs;
-    inputs.densityFromQuality = par.getBool(kAdaptive);
-    inputs.featuresFromSelection = par.getBool(kFeatureSelection);
-    inputs.colorIrregular = par.getBool(kColorIrregular);
-    params.repair = par.getBool(kRepair);
+    inputs.densityFromQuality = density == kDensityVertexQuality;
+    inputs.featuresFromSelection = boolParam(par, kFeatureSelection, false);
+    inputs.colorIrregular = boolParam(par, kColorIrregular, false);
+    params.repair = boolParam(par, kRepair, defaults.repair);
     return remeshFcvt(md, params, inputs, cb);
 }
 
@@ -717,16 +716,20 @@ bool FilterRun::applyField(MeshDocument& md, const ParamValues& par,
     const int fieldSource = par.getEnum(kFieldSource);
     const int seed = par.getInt(kSeed);
     if (fieldSource < 0 || fieldSource >= kComputedFieldSources)
-        return fail(QString("FCVT: fieldSource must be 0..%1 (got %2)")
+        return fail(QString("FCVT: %1 must be 0..%2 (got %3)")
+                        .arg(parameterName(kFieldSource))
                         .arg(kComputedFieldSources - 1)
                         .arg(fieldSource));
     if (seed < 0)
-        return fail(QString("FCVT: seed must be >= 0 (got %1)").arg(seed));
+        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kSeed)).arg(seed));
 
     fieldcvt::FieldParams params;
     params.source = kFieldSources[fieldSource].source;
     params.seed = static_cast<std::uint64_t>(seed);
-    return computeRosyField(md, params, cb);
+    const int maxCrosses = par.hasParameter(kMaxCrosses) ? par.getInt(kMaxCrosses) : kDefaultMaxCrosses;
+    if (maxCrosses < 1)
+        return fail(QString("FCVT: %1 must be at least 1 (got %2)").arg(parameterName(kMaxCrosses)).arg(maxCrosses));
+    return computeRosyField(md, params, maxCrosses, cb);
 }
 
 MeshModel* FilterRun::currentTriangleLayer(MeshDocument& md)
@@ -758,9 +761,10 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
         auto rosy =
             vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<Point3m>(input->cm, kRosyAttribute);
         if (!vcg::tri::Allocator<CMeshO>::IsValidHandle<Point3m>(input->cm, rosy))
-            return fail(QString("FCVT: fieldSource 'per-vertex attribute rosy' needs the per-vertex "
-                                "Point3 attribute '%1' on layer '%2', which has none (run 'Compute "
+            return fail(QString("FCVT: %1 'per-vertex attribute rosy' needs the per-vertex "
+                                "Point3 attribute '%2' on layer '%3', which has none (run 'Compute "
                                 "6-RoSy Field' on it first)")
+                            .arg(parameterName(kFieldSource))
                             .arg(kRosyAttribute)
                             .arg(input->label()));
         run.userDirections.clear();
@@ -771,9 +775,10 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     }
     if (inputs.densityFromQuality) {
         if (!input->hasDataMask(MeshModel::MM_VERTQUALITY))
-            return fail(QString("FCVT: adaptive needs per-vertex quality on layer '%1', which has "
-                                "none (compute one first, e.g. with 'Discrete Curvatures' or 'Per "
-                                "Vertex Quality Function', then make it positive)")
+            return fail(QString("FCVT: %1 'vertex quality' needs per-vertex quality on layer '%2', "
+                                "which has none (compute one first, e.g. with 'Discrete Curvatures' or "
+                                "'Per Vertex Quality Function', then make it positive)")
+                            .arg(parameterName(kAdaptive))
                             .arg(input->label()));
         run.density = fieldcvt::DensitySource::PerVertex;
         run.vertexDensity.clear();
@@ -791,10 +796,11 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
             run.vertexDensity.push_back(q);
         }
         if (bad > 0)
-            return fail(QString("FCVT: adaptive takes the density from the per-vertex quality, which "
-                                "must be finite and > 0 at every vertex; %1 of %2 vertices of '%3' "
-                                "are not (e.g. %4). Map it to positive values first (e.g. 'Per "
-                                "Vertex Quality Function' with q = abs(q) + 0.1)")
+            return fail(QString("FCVT: %1 'vertex quality' takes the density from the per-vertex "
+                                "quality, which must be finite and above 0 at every vertex; %2 of %3 "
+                                "vertices of '%4' are not (e.g. %5). Map it to positive values first "
+                                "(e.g. 'Per Vertex Quality Function' with q = abs(q) + 0.1)")
+                            .arg(parameterName(kAdaptive))
                             .arg(bad)
                             .arg(run.vertexDensity.size())
                             .arg(input->label())
@@ -811,18 +817,16 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
             }
         run.featureEdges = selectionBorder(in, selected);
         if (run.featureEdges.empty())
-            Log(GLLogStream::WARNING,
-                QString("FCVT: featureSelection is on but the selection of '%1' (%2 of %3 faces) has "
+            logWarning(QString("FCVT: %1 is on but the selection of '%2' (%3 of %4 faces) has "
                         "no border inside the mesh: no feature edges from it")
+                    .arg(parameterName(kFeatureSelection))
                     .arg(input->label())
                     .arg(selectedCount)
-                    .arg(selected.size())
-                    .toStdString());
+                    .arg(selected.size()));
         else
-            Log(QString("FCVT features: %1 edges on the border of the %2 selected faces")
+            logInfo(QString("FCVT features: %1 edges on the border of the %2 selected faces")
                     .arg(run.featureEdges.size())
-                    .arg(selectedCount)
-                    .toStdString());
+                    .arg(selectedCount));
     }
 
     // MeshLab's callback takes an int percent; the 2020.09 callbacks never ask to stop, so the
@@ -848,7 +852,7 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
 
     // The new layer is created only once the core succeeded, so a failure leaves the document
     // as it was; a failure while filling it removes it again.
-    const QString layerName = input->label() + " FCVT";
+    const QString layerName = outputLayerName(input->label());
     MeshModel* output = md.addNewMesh("", layerName, true);
     try {
         fcvt_plugin::fromTriMesh(result.mesh, output->cm);
@@ -885,15 +889,13 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
             throw fieldcvt::Error("input vertex count changed during the filter");
         transferVertexData(in, inVerts, keep, output->cm);
         if (keep.colour || keep.quality)
-            Log(QString("FCVT: per-vertex %1 of '%2' transferred to the output by closest point")
+            logInfo(QString("FCVT: per-vertex %1 of '%2' transferred to the output by closest point")
                     .arg(keep.colour && keep.quality ? "colour and quality"
                                                      : keep.colour ? "colour" : "quality")
-                    .arg(input->label())
-                    .toStdString());
+                    .arg(input->label()));
         if (inputs.colorIrregular)
-            Log(("FCVT valence colours on '" + output->label() + "': " +
-                 applyValenceColours(result.mesh, *output))
-                    .toStdString());
+            logInfo(("FCVT valence colours on '" + output->label() + "': " +
+                 applyValenceColours(result.mesh, *output)));
     } catch (...) {
         removeLayer(md, output);
         md.setCurrentMesh(input->id());
@@ -902,45 +904,46 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     if (cb != nullptr)
         cb(100, "FCVT done");
     logReport(result, output->label());
+    if (run.density == fieldcvt::DensitySource::Curvature)
+        logInfo(QString("FCVT density: from curvature, gradation %1").arg(num(run.gradation)));
+    else if (run.density == fieldcvt::DensitySource::PerVertex)
+        logInfo(QString("FCVT density: from the per-vertex quality of '%1'").arg(input->label()));
     if (run.valenceOptimization) {
         const fieldcvt::ValenceStats& v = result.valence;
-        Log(QString("FCVT valence optimisation: V6% %1 -> %2, %3 flips, %4 collapses, %5 splits in %6 rounds")
+        logInfo(QString("FCVT valence optimisation: V6% %1 before, %2 after; %3 flips, %4 collapses, %5 splits in %6 rounds")
                 .arg(num(v.v6Before))
                 .arg(num(v.v6After))
                 .arg(v.flips)
                 .arg(v.collapses)
                 .arg(v.splits)
-                .arg(v.rounds)
-                .toStdString());
+                .arg(v.rounds));
     } else {
-        Log("FCVT valence optimisation: off");
+        logInfo("FCVT valence optimisation: off");
     }
-    Log(run.repair ? QString("FCVT repair: %1 (the counts are in the warnings)")
-                         .arg(result.repair.notes.empty() ? "nothing to repair" : "done")
-                         .toStdString()
-                   : std::string("FCVT repair: off (strict input check)"));
-    Log(QString("FCVT size: mean edge length %1 (%2 vertices)")
+    logInfo(run.repair ? QString("FCVT repair: %1 (the counts are in the warnings)")
+                             .arg(result.repair.notes.empty() ? "nothing to repair" : "done")
+                       : QString("FCVT repair: off (strict input check)"));
+    logInfo(QString("FCVT size: mean edge length %1 (%2 vertices)")
             .arg(num(meanEdgeLength(result.mesh)))
-            .arg(result.mesh.vertexCount())
-            .toStdString());
+            .arg(result.mesh.vertexCount()));
     if (result.outputDirections.empty())
-        Log("FCVT field: none (lambda = 0 or no FCVT iterations)");
+        logInfo("FCVT field: none (lambda = 0 or no FCVT iterations)");
     else
-        Log(QString("FCVT field: %1, %2 of the input; stored at the output vertices as the "
+        logInfo(QString("FCVT field: %1; on the input %2; stored at the output vertices as the "
                     "per-vertex attribute '%3'")
                 .arg(kFieldSources[fieldSourceIndex(run.fieldSource)].label)
-                .arg(singularitySummary(result.singularities))
-                .arg(kRosyAttribute)
-                .toStdString());
+                .arg(singularitySummary(result.singularities, result.inputTopology))
+                .arg(kRosyAttribute));
     return true;
 }
 
 bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
-                                        vcg::CallBackPos* cb)
+                                        int maxCrosses, vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
     if (input == nullptr)
         return false;
+    const bool inputWasModified = input->meshModified();
 
     if (cb != nullptr)
         cb(0, "checking the input");
@@ -970,9 +973,10 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
     MeshModel* drawing = md.addNewMesh("", kFieldLayerLabel, false);
     fcvt_plugin::FieldDrawingStats stats;
     try {
-        stats = fcvt_plugin::drawField(clean, field, drawing->cm);
+        stats = fcvt_plugin::drawField(clean, field, drawing->cm, maxCrosses);
         drawing->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_COLOR);
         drawing->cm.Tr = input->cm.Tr;
+        updateBoxAndNormals(*drawing);
     } catch (...) {
         removeLayer(md, drawing);
         md.setCurrentMesh(input->id());
@@ -989,28 +993,54 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
     }
     if (cb != nullptr)
         cb(100, "6-RoSy field done");
+    if (!inputWasModified)
+        keepUnmodified(md, input->id());
 
-    for (const std::string& note : report.notes)
-        Log(GLLogStream::WARNING, "FCVT input: " + note);
-    Log(QString("FCVT field: %1 (seed %2) on layer '%3': %4; stored as the per-vertex attribute "
-                "'%5'")
-            .arg(kFieldSources[fieldSourceIndex(params.source)].label)
-            .arg(qulonglong(params.seed))
-            .arg(input->label())
-            .arg(singularitySummary(singularities))
-            .arg(kRosyAttribute)
-            .toStdString());
-    Log(QString("FCVT field: new layer '%1': %2 of %3 vertices drawn (every %4), %5 segments of "
-                "length %6 (mean edge %7)")
-            .arg(drawing->label())
-            .arg(stats.drawnVertices)
-            .arg(clean.vertexCount())
-            .arg(stats.stride)
-            .arg(3 * stats.drawnVertices)
-            .arg(num(stats.segmentLength))
-            .arg(num(stats.meanEdgeLength))
-            .toStdString());
+    // What the input check would repair is not an error here: the layer is not changed, the
+    // field just leaves those elements out (information, not a warning).
+    const QStringList ignored = fcvt_plugin::fieldIgnoredText(report);
+    if (!ignored.isEmpty())
+        logInfo(QString("FCVT field: the layer '%1' is unchanged; the field leaves out %2")
+                    .arg(input->label(), ignored.join("; ")));
+    logInfo(QString("FCVT field: %1 (seed %2) on layer '%3': %4; stored as the per-vertex attribute "
+                    "'%5'")
+                .arg(kFieldSources[fieldSourceIndex(params.source)].label)
+                .arg(qulonglong(params.seed))
+                .arg(input->label())
+                .arg(singularitySummary(singularities, fieldcvt::computeTopology(clean)))
+                .arg(kRosyAttribute));
+    logInfo(QString("FCVT field: new layer '%1': crosses at %2 of %3 vertices (%4 at most%5), "
+                    "segments %6 long on average (mean edge %7), lifted %8 x their length off the "
+                    "surface")
+                .arg(drawing->label())
+                .arg(stats.drawnVertices)
+                .arg(clean.vertexCount())
+                .arg(maxCrosses)
+                .arg(stats.spacing > 0 ? QString(", one per grid cell of %1").arg(num(stats.spacing))
+                                       : QString(", every vertex"))
+                .arg(num(stats.meanSegmentLength))
+                .arg(num(stats.meanEdgeLength))
+                .arg(fcvt_plugin::kLift));
     return true;
+}
+
+void FilterRun::keepUnmodified(MeshDocument& md, int layerId)
+{
+    // MeshLab 2020.09's GUI marks the current layer modified after every filter that succeeds
+    // (MainWindow::executeFilter: meshDoc()->mm()->setMeshModified()). The field filter only
+    // adds the attribute `rosy` to it, so the mark is taken back once control returns to the
+    // event loop, and the layer list is redrawn (its public slot updateLayerDialog). Without an
+    // event loop (meshlabserver) this never runs, and nothing needs it.
+    QPointer<MeshDocument> document(&md);
+    QTimer::singleShot(0, qApp, [document, layerId]() {
+        if (document.isNull())
+            return;
+        if (MeshModel* m = document->getMesh(layerId))
+            m->setMeshModified(false);
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (w->inherits("MainWindow"))
+                QMetaObject::invokeMethod(w, "updateLayerDialog", Qt::QueuedConnection);
+    });
 }
 
 bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular,
@@ -1039,73 +1069,66 @@ bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorI
     if (cb != nullptr)
         cb(100, "FCVT: quality report done");
 
-    Log(QString("FCVT quality of '%1': %2 vertices, %3 faces")
+    logInfo(QString("FCVT quality of '%1': %2 vertices, %3 faces")
             .arg(mesh.label())
             .arg(quality.vertices)
-            .arg(quality.faces)
-            .toStdString());
-    Log(("FCVT quality: " + qualityText(quality)).toStdString());
+            .arg(quality.faces));
+    logInfo("FCVT quality: " + qualityText(quality));
     if (reference != nullptr) {
-        Log(QString("FCVT quality: d_RMS %1, d_H %2 (fractions of the bounding-box diagonal of '%3')")
+        logInfo(QString("FCVT quality: d_RMS %1, d_H %2 (fractions of the bounding-box diagonal of '%3')")
                 .arg(num(distance.rms))
                 .arg(num(distance.hausdorff))
-                .arg(reference->label())
-                .toStdString());
+                .arg(reference->label()));
         if (mesh.cm.Tr != reference->cm.Tr)
-            Log(GLLogStream::WARNING,
-                QString("FCVT quality: '%1' and '%2' have different transformation matrices; the "
+            logWarning(QString("FCVT quality: '%1' and '%2' have different transformation matrices; the "
                         "distances are between the stored coordinates")
-                    .arg(mesh.label(), reference->label())
-                    .toStdString());
+                    .arg(mesh.label(), reference->label()));
     } else {
-        Log("FCVT quality: d_RMS and d_H not measured (the reference layer is the measured layer)");
+        logInfo("FCVT quality: d_RMS and d_H not measured (the reference layer is the measured layer)");
     }
-    Log(("FCVT quality topology: " + topologyText(topology)).toStdString());
+    logInfo("FCVT quality topology: " + topologyText(topology));
     if (colorIrregular)
-        Log(("FCVT valence colours: " + colours).toStdString());
+        logInfo("FCVT valence colours: " + colours);
     return true;
+}
+
+void FilterRun::logInfo(const QString& line)
+{
+    log_.info(plainLogText(line));
+}
+
+void FilterRun::logWarning(const QString& line)
+{
+    log_.warning(plainLogText(line));
 }
 
 void FilterRun::logReport(const fieldcvt::RemeshResult& r, const QString& layerName)
 {
     const fieldcvt::QualityMetrics& m = r.metrics;
-    Log(QString("FCVT: new layer '%1': %2 vertices, %3 faces, %4 energy evaluations")
+    logInfo(QString("FCVT: new layer '%1': %2 vertices, %3 faces, %4 energy evaluations")
             .arg(layerName)
             .arg(r.mesh.vertexCount())
             .arg(r.mesh.faceCount())
-            .arg(r.evaluations)
-            .toStdString());
-    Log(QString("FCVT metrics: %1, d_RMS %2, d_H %3, d_boundary %4 (fractions of the input diagonal), "
-                "boundary valence 4: %5%")
+            .arg(r.evaluations));
+    // The boundary figures only where there is a boundary (a closed output has none to measure).
+    const QString boundary =
+        r.outputTopology.boundaryLoops > 0 || r.inputTopology.boundaryLoops > 0
+            ? QString(", d_boundary %1 (of the input diagonal), boundary vertices of valence 4: %2%")
+                  .arg(num(m.dBoundary))
+                  .arg(num(m.boundaryV4Pct))
+            : QString();
+    logInfo(QString("FCVT metrics: %1, d_RMS %2, d_H %3 (fractions of the input diagonal)%4")
             .arg(qualityText(m))
             .arg(num(m.dRms))
             .arg(num(m.dH))
-            .arg(num(m.dBoundary))
-            .arg(num(m.boundaryV4Pct))
-            .toStdString());
-    if (r.valence.v6Before > 0 || r.valence.v6After > 0)
-        Log(QString("FCVT valence optimisation: V6% %1 -> %2 (%3 flips, %4 collapses, %5 splits)")
-                .arg(num(r.valence.v6Before))
-                .arg(num(r.valence.v6After))
-                .arg(r.valence.flips)
-                .arg(r.valence.collapses)
-                .arg(r.valence.splits)
-                .toStdString());
+            .arg(boundary));
     QString times = "FCVT times:";
     for (const fieldcvt::StageTime& t : r.stageTimes)
         times += QString(" %1 %2 s,").arg(QString::fromStdString(t.stage)).arg(num(t.seconds, 3));
     times += QString(" total %1 s").arg(num(r.totalSeconds, 3));
-    Log(times.toStdString());
-    const auto topology = [](const fieldcvt::TopologySummary& t) {
-        return QString("genus %1, %2 boundary loops, %3 components%4")
-            .arg(t.genus)
-            .arg(t.boundaryLoops)
-            .arg(t.components)
-            .arg(t.manifold() ? "" : ", NON-MANIFOLD");
-    };
-    Log(QString("FCVT topology: input %1; output %2")
-            .arg(topology(r.inputTopology), topology(r.outputTopology))
-            .toStdString());
+    logInfo(times);
+    logInfo(QString("FCVT topology: input %1; output %2")
+            .arg(topologyText(r.inputTopology), topologyText(r.outputTopology)));
     // E_CVT and E_field at the end of each phase (the last record of each).
     QString energies;
     for (size_t i = 0; i < r.energyHistory.size(); ++i) {
@@ -1119,9 +1142,9 @@ void FilterRun::logReport(const fieldcvt::RemeshResult& r, const QString& layerN
                         .arg(num(e.field, 6));
     }
     if (!energies.isEmpty())
-        Log(("FCVT energy at the end of each phase: " + energies).toStdString());
+        logInfo("FCVT energy at the end of each phase: " + energies);
     for (const std::string& w : r.warnings)
-        Log(GLLogStream::WARNING, "FCVT warning: " + w);
+        logWarning(QString::fromStdString("FCVT warning: " + w));
 }
 
 

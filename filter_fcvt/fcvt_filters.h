@@ -44,6 +44,12 @@ constexpr const char* kFeatureSelection = "featureSelection";
 constexpr const char* kAdaptive = "adaptive";
 //! Remeshing (default off) and quality report (default on): colour vertices by valence.
 constexpr const char* kColorIrregular = "colorIrregular";
+//! Remeshing: the density source (enum: uniform / curvature / vertex quality; older scripts
+//! carry it as a bool, true = vertex quality) and the curvature gradation.
+constexpr const char* kGradation = "gradation";
+//! Field: at most this many crosses in the drawing layer.
+constexpr const char* kMaxCrosses = "maxCrosses";
+constexpr int kDefaultMaxCrosses = 2000;
 //! Remeshing: repair the input first (repair.h); off = the strict check only.
 constexpr const char* kRepair = "repair";
 //! Quality report: the layer d_RMS / d_H are measured against (itself = no distances).
@@ -72,6 +78,10 @@ std::vector<ParamDef> parameters(FilterId filter, const MeshModel* current);
 class ParamValues {
 public:
     virtual ~ParamValues() = default;
+    //! A script may lack parameters added after the first release (read with their defaults).
+    virtual bool hasParameter(const char* name) const = 0;
+    //! Whether the value is a bool (`adaptive` in scripts from before it was an enum).
+    virtual bool isBool(const char* name) const = 0;
     virtual int getInt(const char* name) const = 0;
     virtual double getFloat(const char* name) const = 0;
     virtual bool getBool(const char* name) const = 0;
@@ -89,7 +99,8 @@ public:
 };
 
 //! A filter failed for a reason the user can fix: `what()` is the whole message. The glue
-//! reports it its MeshLab's way (2020.09: errorMessage and the log; 2022.02: MLException).
+//! reports it its MeshLab's way (2020.09: errorMessage and the log; 2022.02: MLException), as
+//! plainLogText() of it (log_text.h).
 class FilterFailure : public std::runtime_error {
 public:
     explicit FilterFailure(const QString& message) : std::runtime_error(message.toStdString()) {}

@@ -77,7 +77,7 @@ defaults = [("vertexCount", "value", str(max(4, min(len(verts), 5000)))),
             ("lambda", "value", "0.002"), ("cvtIterations", "value", "65"), ("fcvtIterations", "value", "65"),
             ("fieldSource", "value", "0"), ("seed", "value", "1"), ("sizeMode", "value", "0"),
             ("valenceOptimization", "value", "true"), ("featureAngle", "value", "0"),
-            ("featureSelection", "value", "false"), ("adaptive", "value", "false"),
+            ("featureSelection", "value", "false"), ("adaptive", "value", "0"), ("gradation", "value", "1"),
             ("colorIrregular", "value", "false")]
 for name, attr, value in defaults:
     r, n = re.subn(r'(name="%s"[^>]*?%s=")[^"]*"' % (name, attr), r'\g<1>%s"' % value, r)
@@ -95,7 +95,7 @@ timeout 900 xvfb-run -a "$work/stage/bin/meshlabserver" -i "$input" -o "$ply" -m
 rc=$?
 set -e
 [ $rc -eq 0 ] && [ -s "$ply" ] || { tail -n 30 "$work/server.log" "$work/server.err" >&2; die "meshlabserver failed ($rc)"; }
-grep -q "FCVT quality of '$name.* FCVT'" "$work/server.log" || { cat "$work/server.log" >&2; die "the quality report did not run on the FCVT layer"; }
+grep -q "FCVT quality of '${name}_FCVT'" "$work/server.log" || { cat "$work/server.log" >&2; die "the quality report did not run on the FCVT layer"; }
 [ -n "$keep_log" ] && cp "$work/server.log" "$keep_log"
 [ -n "$keep_ply" ] && cp "$ply" "$keep_ply"
 
@@ -117,7 +117,7 @@ cat >"$work/picture.mlp" <<MLP
 <!DOCTYPE MeshLabDocument>
 <MeshLabProject>
  <MeshGroup>
-  <MLMesh label="$name FCVT" filename="$(basename "$ply")" visible="1">
+  <MLMesh label="${name}_FCVT" filename="$(basename "$ply")" visible="1">
    <MLMatrix44>
 1 0 0 0 
 0 1 0 0 
@@ -137,13 +137,8 @@ set -u
 work="$1"; width="$2"; height="$3"; zoom="$4"; info="$5"
 HOME="$work/home" XDG_RUNTIME_DIR="$work/runtime" "$work/stage/bin/meshlab" "$work/picture.mlp" >"$work/gui.log" 2>&1 &
 pid=$!
-wid=""
-for _ in $(seq 1 120); do
-  wid="$(xdotool search --name '^MeshLab 20' 2>/dev/null | head -n 1)"
-  [ -n "$wid" ] && break
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.5
-done
+source "$FCVT_WINDOW_HELPER"
+wid="$(wait_meshlab_window "$pid")"
 sleep 3   # let it load the mesh
 if [ -n "$wid" ] && kill -0 "$pid" 2>/dev/null; then
   # No window manager: showMaximized() does nothing, so size the window by hand; then hide
@@ -171,7 +166,7 @@ else
 fi
 INSIDE
 set +e
-timeout 300 xvfb-run -a -s "-screen 0 ${screen}x24" bash "$work/inside.sh" "$work" "${screen%x*}" "${screen#*x}" "$zoom" "$info" \
+FCVT_WINDOW_HELPER="$here/scripts/meshlab_window.sh" timeout 300 xvfb-run -a -s "-screen 0 ${screen}x24" bash "$work/inside.sh" "$work" "${screen%x*}" "${screen#*x}" "$zoom" "$info" \
   >"$work/xvfb.log" 2>&1
 set -e
 [ "$(cat "$work/gui-status.txt" 2>/dev/null)" = closed ] || { cat "$work/xvfb.log" "$work/gui.log" >&2 || true; die "the GUI did not stay up"; }

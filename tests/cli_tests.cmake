@@ -12,6 +12,9 @@ set(FCVT_RESOURCES ${PROJECT_SOURCE_DIR}/resources)
 
 add_test(NAME cli_usage_errors
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_usage.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES} ${FCVT_CLI_WORK}/usage)
+# Issue 15: fcvt convert, format to format, with remesh's input checks; the shipped PLY examples.
+add_test(NAME cli_convert
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_convert.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES} ${FCVT_CLI_WORK}/convert)
 add_test(NAME cli_metrics_json
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_metrics_json.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES})
 
@@ -73,7 +76,7 @@ add_test(NAME cli_remesh_field
 add_test(NAME cli_compare_fertility_3000
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_compare.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/fertility.off 3000 300)
 
-set_tests_properties(cli_usage_errors cli_metrics_json cli_field_singularities PROPERTIES LABELS "cli" TIMEOUT 600)
+set_tests_properties(cli_usage_errors cli_convert cli_metrics_json cli_field_singularities PROPERTIES LABELS "cli" TIMEOUT 600)
 set_tests_properties(cli_remesh_field cli_compare_fertility_3000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
 set_tests_properties(cli_quality_fertility_3000 cli_quality_torus_1000 cli_quality_bunny_5000 cli_determinism
   PROPERTIES LABELS "cli;slow" TIMEOUT 1200)

@@ -48,6 +48,13 @@ add_test(NAME meshlab_compare_isotropic
 add_test(NAME meshlab_invalid_new_parameters
   COMMAND bash "${_fcvt_ml_dir}/invalid_new_parameters.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/invalid_new_parameters")
+# Issue 15: log text, layer names, the curvature density and old-order scripts.
+if(TARGET fcvt)
+  add_test(NAME meshlab_log_density
+    COMMAND bash "${_fcvt_ml_dir}/log_density.sh" "${PROJECT_SOURCE_DIR}"
+            "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/log_density" "$<TARGET_FILE:fcvt>")
+  set_tests_properties(meshlab_log_density PROPERTIES LABELS meshlab TIMEOUT 900)
+endif()
 set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_parameter
   meshlab_field_torus meshlab_missing_rosy meshlab_field_then_remesh meshlab_colour_transfer
   meshlab_quality_report meshlab_compare_isotropic meshlab_invalid_new_parameters
@@ -58,3 +65,9 @@ add_test(NAME meshlab_gui_smoke
   COMMAND bash "${_fcvt_ml_dir}/gui_smoke.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/gui_smoke")
 set_tests_properties(meshlab_gui_smoke PROPERTIES LABELS meshlab TIMEOUT 400 SKIP_RETURN_CODE 77)
+# Issue 15 in the GUI: the field filter applied with xdotool (layer left unmodified, its
+# drawing checked on the screenshot) and the remeshing dialog's default size.
+add_test(NAME meshlab_gui_field_dialog
+  COMMAND bash "${_fcvt_ml_dir}/gui_field_dialog.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/gui_field_dialog")
+set_tests_properties(meshlab_gui_field_dialog PROPERTIES LABELS meshlab TIMEOUT 600 SKIP_RETURN_CODE 77)

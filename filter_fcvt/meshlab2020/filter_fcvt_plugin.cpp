@@ -5,6 +5,7 @@
 #include <string>
 
 #include "../fcvt_filters.h"
+#include "../log_text.h"
 
 namespace {
 
@@ -51,6 +52,11 @@ void addRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, MeshDocum
 class Values : public fcvt_plugin::ParamValues {
 public:
     explicit Values(const RichParameterList& par) : par_(par) {}
+    bool hasParameter(const char* name) const override { return par_.hasParameter(name); }
+    bool isBool(const char* name) const override
+    {
+        return par_.getParameterByName(name).value().isBool();
+    }
     int getInt(const char* name) const override { return par_.getInt(name); }
     double getFloat(const char* name) const override { return par_.getFloat(name); }
     bool getBool(const char* name) const override { return par_.getBool(name); }
@@ -168,8 +174,8 @@ bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParam
 
 bool FilterFcvtPlugin::fail(const QString& message)
 {
-    errorMessage = message;
-    Log(GLLogStream::WARNING, message.toStdString());
+    errorMessage = fcvt_plugin::plainLogText(message);
+    Log(GLLogStream::WARNING, errorMessage.toStdString());
     return false;
 }
 

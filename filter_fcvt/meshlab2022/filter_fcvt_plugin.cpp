@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "../fcvt_filters.h"
+#include "../log_text.h"
 
 namespace {
 
@@ -48,6 +49,11 @@ RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& def
 class Values : public fcvt_plugin::ParamValues {
 public:
     Values(const RichParameterList& par, MeshDocument& md) : par_(par), md_(md) {}
+    bool hasParameter(const char* name) const override { return par_.hasParameter(name); }
+    bool isBool(const char* name) const override
+    {
+        return par_.getParameterByName(name).value().isBool();
+    }
     int getInt(const char* name) const override { return par_.getInt(name); }
     double getFloat(const char* name) const override { return double(par_.getFloat(name)); }
     bool getBool(const char* name) const override { return par_.getBool(name); }
@@ -162,6 +168,7 @@ std::map<std::string, QVariant> FilterFcvtPlugin::applyFilter(const QAction* a,
     } catch (...) {
         failure = fcvt_plugin::unexpectedFailure(nullptr);
     }
+    failure = fcvt_plugin::plainLogText(failure);
     log.warning(failure);
     throw MLException(failure);
 }

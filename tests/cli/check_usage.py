@@ -4,7 +4,8 @@ Usage: check_usage.py FCVT RESOURCES_DIR WORK_DIR"""
 import os
 import sys
 
-from fcvt_check import check, finish, run
+import fcvt_check
+from fcvt_check import bad_mesh_files, check, finish, run, write_file
 
 fcvt, resources, work = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(work, exist_ok=True)
@@ -12,21 +13,8 @@ torus = os.path.join(resources, "torus.obj")
 out = os.path.join(work, "out.ply")
 
 
-def write(name, data):
-    path = os.path.join(work, name)
-    with open(path, "wb") as f:
-        f.write(data)
-    return path
-
-
 def expect_error(args, code, fragment=""):
-    got, stdout, stderr = run([fcvt] + args, timeout=300)
-    lines = stderr.splitlines()
-    label = " ".join(args)
-    check(got == code, f"'{label}': exit code {got}, expected {code}")
-    check(len(lines) == 1 and lines[0].startswith("fcvt: error: "), f"'{label}': stderr is not one error line: {stderr!r}")
-    check(fragment in stderr, f"'{label}': stderr {stderr!r} does not mention {fragment!r}")
-    check(stdout == "", f"'{label}': unexpected stdout {stdout!r}")
+    fcvt_check.expect_error(fcvt, args, code, fragment)
 
 
 # Usage errors: exit code 2.
@@ -72,16 +60,11 @@ for args, fragment in [
     expect_error(args, 2, fragment)
 
 # Runtime failures: exit code 1, the message names the file.
-garbage = write("garbage.obj", b"\x00\x01garbage\nf 1 2 3\n")
-truncated = write("truncated.off", b"OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n")
-truncated_ply = write("truncated.ply", b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
-                      b"property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                      b"end_header\n\x00\x00")
-empty = write("empty.stl", b"")
-cloud = write("cloud.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\n")
-nan_mesh = write("nan.obj", b"v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n")
+bad = bad_mesh_files(work)
+garbage, truncated, truncated_ply, empty, cloud, nan_mesh = (
+    bad[k] for k in ["garbage", "truncated", "truncated_ply", "empty", "cloud", "nan"])
 missing = os.path.join(work, "missing.ply")
-plain_ply = write("plain.ply", b"ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+plain_ply = write_file(work, "plain.ply", b"ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                   b"property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
                   b"0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
 for args, fragment in [

@@ -1,6 +1,7 @@
 """Helpers shared by the end-to-end CLI tests: run fcvt, read its PLY output, and measure a
 triangle mesh in pure Python, independently of the C++ metrics."""
 import json
+import os
 import math
 import struct
 import subprocess
@@ -31,6 +32,43 @@ def run(args, timeout=900):
     """Runs a command; returns (exit code, stdout, stderr) as text."""
     p = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
     return p.returncode, p.stdout, p.stderr
+
+
+def write_file(directory, name, data):
+    """Writes bytes `data` to directory/name; returns the path."""
+    path = os.path.join(directory, name)
+    with open(path, "wb") as f:
+        f.write(data)
+    return path
+
+
+def bad_mesh_files(directory):
+    """Broken inputs every command that reads a mesh must refuse with one error line (exit 1):
+    name -> path, written into `directory`."""
+    return {
+        "garbage": write_file(directory, "garbage.obj", b"\x00\x01garbage\nf 1 2 3\n"),
+        "truncated": write_file(directory, "truncated.off", b"OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n"),
+        "truncated_ply": write_file(directory, "truncated.ply",
+                                    b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                                    b"property float y\nproperty float z\nelement face 1\n"
+                                    b"property list uchar int vertex_indices\nend_header\n\x00\x00"),
+        "empty": write_file(directory, "empty.stl", b""),
+        "cloud": write_file(directory, "cloud.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+        "nan": write_file(directory, "nan.obj",
+                          b"v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n"),
+    }
+
+
+def expect_error(fcvt, args, code, fragment=""):
+    """`fcvt ARGS` fails with exit code `code` and exactly one line "fcvt: error: ..." on stderr
+    (mentioning `fragment`), nothing on stdout."""
+    got, stdout, stderr = run([fcvt] + args, timeout=300)
+    lines = stderr.splitlines()
+    label = " ".join(args)
+    check(got == code, f"'{label}': exit code {got}, expected {code}")
+    check(len(lines) == 1 and lines[0].startswith("fcvt: error: "), f"'{label}': stderr is not one error line: {stderr!r}")
+    check(fragment in stderr, f"'{label}': stderr {stderr!r} does not mention {fragment!r}")
+    check(stdout == "", f"'{label}': unexpected stdout {stdout!r}")
 
 
 def run_ok(args, timeout=900):

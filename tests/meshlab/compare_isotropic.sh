@@ -22,7 +22,7 @@ for f in "Duplicate Current layer" "Remeshing: Isotropic Explicit Remeshing" "Ch
 done
 # meshlabserver reprints the whole log after each filter: take the last report of each layer.
 count() { grep "FCVT quality of '$1'" "$log" | tail -n 1 | sed -n 's/.*: \([0-9]*\) vertices.*/\1/p'; }
-n_fcvt="$(count "torus.off FCVT")"; n_iso="$(count "torus.off_copy")"
+n_fcvt="$(count "torus_FCVT")"; n_iso="$(count "torus.off_copy")"
 [ -n "$n_fcvt" ] && [ -n "$n_iso" ] || fail "both layers must be measured (FCVT '$n_fcvt', built-in '$n_iso')"
 grep -q "FCVT quality: d_RMS .*diagonal of 'torus.off')" "$log" || fail "no distances against the input"
 echo "FCVT layer $n_fcvt vertices, built-in layer $n_iso vertices"

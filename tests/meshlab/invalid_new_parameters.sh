@@ -50,14 +50,14 @@ expect_failure() {
   [ ! -e "$work/out/$name.ply" ] || fail "$name: an output was written despite the failure"
 }
 
-expect_failure angle "$work/out/torus.off" "FCVT: featureAngle must be 0..180 degrees, 0 = off (got 200)" featureAngle=200
-expect_failure noquality "$work/out/torus.off" "FCVT: adaptive needs per-vertex quality on layer 'torus.off'" adaptive=true
-expect_failure badquality "$work/out/torus-q.ply" "must be finite and > 0 at every vertex" adaptive=true
+expect_failure angle "$work/out/torus.off" "FCVT: 'Feature angle (deg)' (featureAngle) must be 0..180 degrees, 0 = off (got 200)" featureAngle=200
+expect_failure noquality "$work/out/torus.off" "FCVT: 'Vertex density' (adaptive) 'vertex quality' needs per-vertex quality on layer 'torus.off'" adaptive=2
+expect_failure badquality "$work/out/torus-q.ply" "must be finite and above 0 at every vertex" adaptive=2
 
 mlx="$(script selection featureSelection=true)"
 run_meshlabserver "$server" "$work/out/selection.txt" -i "$work/out/torus.off" -o "$work/out/selection.ply" -s "$mlx"
 [ "$MLS_RC" -eq 0 ] || fail "featureSelection without a selection: meshlabserver exited with $MLS_RC"
-grep -q "featureSelection is on but the selection of 'torus.off' (0 of" "$work/out/selection.txt" \
+grep -q "'Features from selection' (featureSelection) is on but the selection of 'torus.off' (0 of" "$work/out/selection.txt" \
   || fail "featureSelection without a selection: no warning"
 # A selection (faces with all corners at x > 0): its border becomes feature edges.
 sel="$work/out/selected.mlx"

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The staged meshlabserver loads libfilter_fcvt.so with its three filters, and every .mlx script in
 # resources/ lists exactly the parameters its filter declares (meshlabserver 2020.09 asserts on
-# a script missing one, and refuses a script with more), under the frozen names.
+# a script missing one, and refuses a script with more), under the frozen names. In any order:
+# MeshLab matches a script's parameters by name (issue 15: the dialog puts the common ones
+# first, the scripts keep the old order with new parameters appended; meshlab_log_density runs
+# an old-order script).
 # Usage: plugin_loads.sh SOURCE_DIR PLUGIN_SO WORK_DIR
 set -euo pipefail
 FCVT_SOURCE_DIR="$1"; plugin="$2"; work="$3"
@@ -23,12 +26,12 @@ import glob, os, re, sys
 import xml.etree.ElementTree as ET
 
 dump_path, resources = sys.argv[1], sys.argv[2]
-frozen = {  # filter name -> parameter names, in declaration order (frozen API)
+frozen = {  # filter name -> parameter names, in the scripts' order (frozen API)
     "Remeshing: Field-Aligned CVT (FCVT)":
         ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed",
          "sizeMode", "targetLength", "valenceOptimization", "featureAngle", "featureSelection",
-         "adaptive", "colorIrregular", "repair"],
-    "Compute 6-RoSy Field": ["fieldSource", "seed"],
+         "adaptive", "colorIrregular", "gradation", "repair"],
+    "Compute 6-RoSy Field": ["fieldSource", "seed", "maxCrosses"],
     "Remeshing Quality Report (FCVT)": ["referenceLayer", "colorIrregular"],
 }
 declared, current = {}, None
@@ -68,12 +71,12 @@ for path in scripts:
                 continue
             bad.append(f"{where}: no such filter loaded")
             continue
-        if name in frozen and names != frozen[name]:
+        if name in frozen and sorted(names) != sorted(frozen[name]):
             bad.append(f"{where}: parameters {names}, frozen list {frozen[name]}")
-        if rows != declared[name]:
+        if sorted(rows) != sorted(declared[name]):
             missing = [r for r in declared[name] if r not in rows]
             extra = [r for r in rows if r not in declared[name]]
-            bad.append(f"{where}: does not list exactly the declared parameters in order "
+            bad.append(f"{where}: does not list exactly the declared parameters "
                        f"(missing {missing}, not declared {extra})")
         for p in params:
             if p.get("type") == "RichEnum":

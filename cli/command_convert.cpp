@@ -1,0 +1,80 @@
+// `fcvt convert IN OUT`: a mesh file in another format (PLY, OBJ, OFF, STL, by extension), after
+// the input checks `fcvt remesh` makes; e.g. an OBJ that MeshLab 2020.09's importer aborts on,
+// turned into a PLY it opens.
+#include "arguments.h"
+#include "cli_common.h"
+#include "commands.h"
+
+#include "errors.h"
+#include "mesh_check.h"
+#include "mesh_io.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace fieldcvt::cli {
+
+namespace {
+
+void printUsage()
+{
+    std::printf(
+        "Usage: fcvt convert IN OUT [--quiet]\n"
+        "\n"
+        "Writes the triangle mesh IN to OUT, each in the format of its extension (.ply written\n"
+        "binary, .obj, .off, .stl). IN is read and checked as 'fcvt remesh' reads and checks it: an\n"
+        "empty file, a point cloud, a bad index, a non-finite coordinate, a non-manifold edge or a\n"
+        "non-orientable surface is an error; polygons are triangulated. What remesh would repair\n"
+        "(duplicate or unreferenced vertices, degenerate or duplicate faces, orientation,\n"
+        "non-manifold vertices) is printed as a warning and written as it is: OUT holds IN's\n"
+        "vertices and faces, in IN's order. A PLY IN's normals (nx ny nz) and field (rosy_x rosy_y\n"
+        "rosy_z) go to a PLY OUT.\n"
+        "\n"
+        "Options:\n"
+        "  --quiet       print nothing but errors\n"
+        "  -h, --help    show this help\n");
+}
+
+}  // namespace
+
+int runConvert(const std::vector<std::string>& args)
+{
+    const Arguments a(args, {}, {"quiet", "help"});
+    if (a.flag("help")) {
+        printUsage();
+        return 0;
+    }
+    const std::vector<std::string>& files = fileArguments(a, 2, "convert", "an input and an output file");
+    const std::string& inPath = files[0];
+    const std::string& outPath = files[1];
+    const bool quiet = a.flag("quiet");
+    checkOutputPath(outPath);
+
+    MeshReadInfo readInfo;
+    VertexAttributes attributes;
+    const TriMesh input = readMesh(inPath, &readInfo, &attributes);
+    InputReport check;
+    try {
+        prepareInput(input, check);
+    } catch (const InvalidInputError& e) {
+        throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
+    }
+    const bool keepAttributes = isPlyPath(outPath) && (attributes.normals.size() == input.vertices.size() ||
+                                                       attributes.rosy.size() == input.vertices.size());
+    if (attributes.normals.size() != input.vertices.size()) attributes.normals.clear();
+    if (attributes.rosy.size() != input.vertices.size()) attributes.rosy.clear();
+    writeMesh(outPath, input, keepAttributes ? &attributes : nullptr);
+
+    if (!quiet) {
+        for (const std::string& note : readInfo.notes) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
+        for (const std::string& note : check.notes)
+            std::fprintf(stderr, "fcvt: warning: %s: not repaired, convert writes the mesh as read (remesh would have: %s)\n",
+                         inPath.c_str(), note.c_str());
+        std::printf("%s: %d vertices, %d faces (from %s)\n", outPath.c_str(), input.vertexCount(), input.faceCount(),
+                    inPath.c_str());
+    }
+    return 0;
+}
+
+}  // namespace fieldcvt::cli
