@@ -7,7 +7,7 @@
 #    the index sum explained; the bunny's boundary figures given; the curvature run's edge lengths
 #    follow the curvature density (tests/cli/check_adaptive.py on the saved layer).
 # B. tests/meshlab/fcvt-remesh-13params.mlx, the script as shipped before issue 15 (13 parameters
-#    in the old order, adaptive a RichBool), plus gradation at its end: it runs, its values are
+#    in the old order, adaptive a RichBool), plus gradation and repair at its end: it runs, its values are
 #    used by name (valenceOptimization false: "off"; 300 vertices), the closed torus gets no
 #    boundary figures and no "n/a"; with adaptive true it asks for the vertex quality (true =
 #    'vertex quality'). Without gradation meshlabserver 2020.09 aborts on its own assertion
@@ -24,6 +24,9 @@ shipped="$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx"
 old="$FCVT_SOURCE_DIR/tests/meshlab/fcvt-remesh-13params.mlx"
 gradation_line="$(grep 'name="gradation"' "$shipped")"
 [ -n "$gradation_line" ] || fail "no gradation in $shipped"
+# repair (issue 17) came after gradation: meshlabserver 2020.09 needs it in the script as well.
+repair_line="$(grep 'name="repair"' "$shipped")"
+[ -n "$repair_line" ] || fail "no repair in $shipped"
 
 # filter_body MLX NAME=VALUE...: the <filter> element of MLX with those values.
 filter_body() {
@@ -78,7 +81,7 @@ old_script() {  # OUT [with-gradation] NAME=VALUE...
   local out="$1" grad="$2"; shift 2
   { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
     filter_body "$old" vertexCount=300 cvtIterations=10 fcvtIterations=10 "$@" | sed '/<\/filter>/d'
-    [ "$grad" = yes ] && echo "$gradation_line"
+    [ "$grad" = yes ] && printf '%s\n%s\n' "$gradation_line" "$repair_line"
     echo ' </filter>'; echo '</FilterScript>'; } > "$out"
 }
 old_script "$work/out/old.mlx" yes valenceOptimization=false
