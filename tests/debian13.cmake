@@ -27,9 +27,8 @@ add_test(NAME debian13_gui COMMAND bash "${_d13}/gui.sh" ${_d13_args} "${CMAKE_C
 set(_d13_tests debian13_plugin_symbols debian13_gui)
 
 # The meshlabserver tests of tests/meshlab/, against MeshLab 2022.02 (tests/meshlab/common.sh,
-# FCVT_MESHLAB_HOST). compare_isotropic is left out: it drives MeshLab's built-in filters
-# ("Duplicate Current layer", "Isotropic Explicit Remeshing"), whose names and parameters are
-# MeshLab's, not ours.
+# FCVT_MESHLAB_HOST). compare_isotropic is left out: it drives MeshLab's built-in filters, and
+# MeshLab 2022.02 has no "Change the current layer" filter.
 set(_d13_cli "")
 if(TARGET fcvt)
   set(_d13_cli "$<TARGET_FILE:fcvt>")
