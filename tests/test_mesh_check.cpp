@@ -13,37 +13,22 @@
 
 using namespace fieldcvt;
 
-namespace {
-
-std::string errorOf(const TriMesh& mesh)
-{
-    InputReport report;
-    try {
-        prepareInput(mesh, report);
-    } catch (const InvalidInputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-}  // namespace
-
 TEST(MeshCheck, RejectsEmptyMeshAndPointCloud)
 {
-    EXPECT_NE(errorOf(TriMesh{}).find("empty"), std::string::npos);
+    EXPECT_NE(testmesh::inputError(TriMesh{}).find("empty"), std::string::npos);
     TriMesh cloud;
     cloud.vertices = {{0, 0, 0}, {1, 0, 0}};
-    EXPECT_NE(errorOf(cloud).find("point cloud"), std::string::npos);
+    EXPECT_NE(testmesh::inputError(cloud).find("point cloud"), std::string::npos);
 }
 
 TEST(MeshCheck, RejectsNonFiniteCoordinatesAndBadIndices)
 {
     TriMesh m = testmesh::planeGrid(2);
     m.vertices[4].x() = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_NE(errorOf(m).find("vertex 4 has a non-finite coordinate"), std::string::npos);
+    EXPECT_NE(testmesh::inputError(m).find("vertex 4 has a non-finite coordinate"), std::string::npos);
     TriMesh bad = testmesh::planeGrid(2);
     bad.faces[0][1] = 99;
-    EXPECT_NE(errorOf(bad).find("refers to vertex 99"), std::string::npos);
+    EXPECT_NE(testmesh::inputError(bad).find("refers to vertex 99"), std::string::npos);
 }
 
 TEST(MeshCheck, RejectsNonManifoldEdgeWithCountAndLocation)
@@ -51,7 +36,7 @@ TEST(MeshCheck, RejectsNonManifoldEdgeWithCountAndLocation)
     TriMesh m = testmesh::planeGrid(1);  // two triangles sharing the diagonal (0, 3)
     m.vertices.emplace_back(0.5, 0.5, 1.0);
     m.faces.push_back({0, 3, 4});
-    const std::string error = errorOf(m);
+    const std::string error = testmesh::inputError(m);
     EXPECT_NE(error.find("1 non-manifold edge"), std::string::npos) << error;
     EXPECT_NE(error.find("vertices 0"), std::string::npos) << error;
 }
@@ -232,23 +217,8 @@ TEST(MeshCheck, OrientsEachComponentOnItsOwn)
 
 TEST(MeshCheck, RejectsMoebiusStrip)
 {
-    const double pi = 3.14159265358979323846;
-    const int n = 24;
-    TriMesh m;
-    for (int i = 0; i < n; ++i) {
-        const double u = 2 * pi * i / n;
-        for (double s : {-0.3, 0.3})
-            m.vertices.emplace_back((1 + s * std::cos(u / 2)) * std::cos(u), (1 + s * std::cos(u / 2)) * std::sin(u),
-                                    s * std::sin(u / 2));
-    }
-    // Vertex 2i is the -s rail, 2i + 1 the +s rail; after a full turn the rails swap.
-    for (int i = 0; i < n; ++i) {
-        const int a = 2 * i, b = 2 * i + 1;
-        const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
-        m.faces.push_back({a, c, d});
-        m.faces.push_back({a, d, b});
-    }
-    const std::string error = errorOf(m);
+    const TriMesh m = testmesh::moebius();
+    const std::string error = testmesh::inputError(m);
     EXPECT_NE(error.find("not orientable"), std::string::npos) << error;
     EXPECT_NE(error.find("Moebius"), std::string::npos) << error;
     EXPECT_NE(error.find("between vertices"), std::string::npos) << error;

@@ -1,6 +1,8 @@
 #pragma once
 // Small procedural meshes for unit tests, and the path of the bundled ones.
+#include "errors.h"
 #include "mesh.h"
+#include "mesh_check.h"
 
 #include <cmath>
 #include <map>
@@ -10,6 +12,39 @@
 namespace fieldcvt::testmesh {
 
 inline std::string resource(const std::string& name) { return std::string(FCVT_RESOURCES_DIR) + "/" + name; }
+
+//! The strict input check's refusal of `mesh` (prepareInput's message), "" if it passes.
+inline std::string inputError(const TriMesh& mesh)
+{
+    InputReport report;
+    try {
+        prepareInput(mesh, report);
+    } catch (const InvalidInputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+//! A Moebius band (the one of tests/robustness/meshgen.py): n quads between two rails; vertex 2i
+//! is the -width rail, 2i + 1 the +width rail, and after a full turn the rails swap.
+inline TriMesh moebius(int n = 24, double width = 0.3)
+{
+    const double pi = 3.14159265358979323846;
+    TriMesh m;
+    for (int i = 0; i < n; ++i) {
+        const double u = 2 * pi * i / n;
+        for (double s : {-width, width})
+            m.vertices.emplace_back((1 + s * std::cos(u / 2)) * std::cos(u), (1 + s * std::cos(u / 2)) * std::sin(u),
+                                    s * std::sin(u / 2));
+    }
+    for (int i = 0; i < n; ++i) {
+        const int a = 2 * i, b = 2 * i + 1;
+        const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+        m.faces.push_back({a, c, d});
+        m.faces.push_back({a, d, b});
+    }
+    return m;
+}
 
 //! Planar grid over [0, size]^2 (z = 0), `cells` x `cells` squares split into two triangles.
 inline TriMesh planeGrid(int cells, double size = 1.0)

@@ -34,25 +34,6 @@ TriMesh moved(TriMesh m, double scale, const Vec3& offset)
     return m;
 }
 
-// The Moebius band of tests/robustness/meshgen.py: two rows of vertices, the ends glued reversed.
-TriMesh moebius(int n = 24, double width = 0.3)
-{
-    TriMesh m;
-    for (int i = 0; i < n; ++i) {
-        const double u = 2 * M_PI * i / n;
-        for (double s : {-width, width})
-            m.vertices.emplace_back((1 + s * std::cos(u / 2)) * std::cos(u), (1 + s * std::cos(u / 2)) * std::sin(u),
-                                    s * std::sin(u / 2));
-    }
-    for (int i = 0; i < n; ++i) {
-        const int a = 2 * i, b = 2 * i + 1;
-        const int c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
-        m.faces.push_back({a, c, d});
-        m.faces.push_back({a, d, b});
-    }
-    return m;
-}
-
 // Repairs, then the strict check; the clean surface must be manifold and oriented.
 struct Repaired {
     RepairReport repair;
@@ -74,17 +55,6 @@ Repaired repairOf(const TriMesh& input, int budget = 0)
     return r;
 }
 
-std::string strictError(const TriMesh& input)
-{
-    InputReport report;
-    try {
-        prepareInput(input, report);
-    } catch (const InvalidInputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
 }  // namespace
 
 TEST(Repair, CleanMeshIsUntouched)
@@ -104,7 +74,7 @@ TEST(Repair, EveryFaceStoredTwiceKeepsOneSheet)
         const Face& t = sphere.faces[f];
         twice.faces.push_back(f % 2 ? t : Face{t[0], t[2], t[1]});  // half opposite, half the same
     }
-    EXPECT_EQ(strictError(twice), "");  // the strict check drops them too (without telling which kind)
+    EXPECT_EQ(testmesh::inputError(twice), "");  // the strict check drops them too (without telling which kind)
     const Repaired r = repairOf(twice);
     EXPECT_EQ(r.repair.removedDuplicateFaces + r.repair.removedOppositeFaces, sphere.faceCount());
     EXPECT_GT(r.repair.removedOppositeFaces, 0);
@@ -125,7 +95,7 @@ TEST(Repair, FinOfThreeSheetsOnOneEdgeIsSplit)
         fin.faces.push_back({0, p, p + 1});
         fin.faces.push_back({0, p + 1, 1});
     }
-    EXPECT_NE(strictError(fin).find("non-manifold edge"), std::string::npos);
+    EXPECT_NE(testmesh::inputError(fin).find("non-manifold edge"), std::string::npos);
     const Repaired r = repairOf(fin);
     EXPECT_EQ(r.repair.nonManifoldEdges, 1);
     EXPECT_EQ(r.mesh.faceCount(), 6);  // nothing lost
@@ -167,7 +137,7 @@ TEST(Repair, TwoShellsSharingAnEdgeStayTwoClosedShells)
         if (volume < 0)
             for (int f = 4 * s; f < 4 * s + 4; ++f) std::swap(m.faces[f][1], m.faces[f][2]);
     }
-    EXPECT_NE(strictError(m).find("non-manifold edge"), std::string::npos);
+    EXPECT_NE(testmesh::inputError(m).find("non-manifold edge"), std::string::npos);
     const Repaired r = repairOf(m);
     EXPECT_EQ(r.repair.nonManifoldEdges, 1);
     EXPECT_EQ(r.topology.components, 2);
@@ -177,9 +147,9 @@ TEST(Repair, TwoShellsSharingAnEdgeStayTwoClosedShells)
 
 TEST(Repair, MoebiusBandAmongOtherComponentsIsCutIntoAnOrientablePiece)
 {
-    const TriMesh m = combine(combine(testmesh::icosphere(1), moved(moebius(), 1, {4, 0, 0})),
+    const TriMesh m = combine(combine(testmesh::icosphere(1), moved(testmesh::moebius(), 1, {4, 0, 0})),
                               moved(testmesh::torus(12, 6), 1, {-4, 0, 0}));
-    EXPECT_NE(strictError(m).find("not orientable"), std::string::npos);
+    EXPECT_NE(testmesh::inputError(m).find("not orientable"), std::string::npos);
     const Repaired r = repairOf(m);
     EXPECT_EQ(r.repair.nonOrientableComponents, 1);
     EXPECT_GE(r.repair.seamEdges, 1);

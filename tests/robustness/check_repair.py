@@ -115,8 +115,12 @@ def meshlab_checks(source, plugin, work, fcvt):
             out = os.path.join(work, "%s-ml-%s.ply" % (name, repair))
             if os.path.exists(out):
                 os.remove(out)
-            p = subprocess.run(["timeout", "-k", "5", "300", "xvfb-run", "-a", server, "-i", inp, "-o", out, "-s",
-                                os.path.join(work, "repair-%s.mlx" % repair)], capture_output=True, text=True)
+            for attempt in range(2):  # once more when the X server did not start (no FCVT line at all)
+                p = subprocess.run(["timeout", "-k", "5", "300", "xvfb-run", "-a", server, "-i", inp, "-o", out, "-s",
+                                    os.path.join(work, "repair-%s.mlx" % repair)], capture_output=True, text=True)
+                if "FCVT" in p.stdout:
+                    break
+                print("  meshlabserver exit %d without an FCVT line: %s" % (p.returncode, p.stderr.strip()[-300:]))
             log = p.stdout
             print("%-28s meshlab repair=%s exit %d" % (name, repair, p.returncode), flush=True)
             if repair == "false":
