@@ -64,8 +64,17 @@ using SeedTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adapto
 // nanoflann's k-nearest result set with a known upper bound on the k-th distance: subtrees
 // beyond it are skipped from the start. The answer is the same as without the bound as long as
 // the bound is not below the true k-th distance.
+// nanoflann 1.5 renamed SearchParams (Debian 12 has 1.4.2, Debian 13 1.7.1).
+#if defined(NANOFLANN_VERSION) && NANOFLANN_VERSION >= 0x150
+using KnnSearchParams = nanoflann::SearchParameters;
+#else
+using KnnSearchParams = nanoflann::SearchParams;
+#endif
+
 class BoundedKnnResult {
 public:
+    using DistanceType = double;  // nanoflann >= 1.5 reads these
+    using IndexType = uint32_t;
     BoundedKnnResult(size_t capacity, uint32_t* indices, double* dists, double bound)
         : indices_(indices), dists_(dists), capacity_(capacity)
     {
@@ -83,6 +92,7 @@ public:
         if (count_ < capacity_) ++count_;
         return true;
     }
+    void sort() {}  // nanoflann >= 1.5 asks for a sorted result: it always is
 
 private:
     uint32_t* indices_;
@@ -294,7 +304,7 @@ struct RestrictedVoronoiDiagram::Impl {
                     bound = r2 * (1 + 1e-9) + std::numeric_limits<double>::min();  // rounding margin
                 }
                 BoundedKnnResult knn(k, idx.data(), d2.data(), bound);
-                tree->findNeighbors(knn, xi.data(), nanoflann::SearchParams());
+                tree->findNeighbors(knn, xi.data(), KnnSearchParams());
                 size_t found = knn.size();
                 if (found < static_cast<size_t>(std::min(k, n))) {  // cannot happen with a true bound; be safe
                     found = tree->knnSearch(xi.data(), k, idx.data(), d2.data());

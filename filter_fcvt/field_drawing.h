@@ -7,7 +7,7 @@
 // without faces as a point square (MLPoliciesStandAloneFunctions::suggestedDefaultPerViewRenderingData
 // always turns PR_POINTS on for it), and on a dense mesh those squares at the segment ends cover
 // the model; a layer with faces is drawn solid, without points, by default.
-#include <common/ml_mesh_type.h>
+#include "meshlab_types.h"
 
 #include "field.h"
 #include "mesh.h"

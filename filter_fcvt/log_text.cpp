@@ -45,6 +45,7 @@ constexpr ParameterLabel kParameterLabels[] = {
     {"repair", "Repair the input"},
     {"referenceLayer", "Reference layer (distances)"},
     {"maxCrosses", "Crosses drawn (at most)"},
+    {"repair", "Repair the input"},
 };
 
 }  // namespace

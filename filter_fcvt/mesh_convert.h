@@ -1,7 +1,7 @@
 #pragma once
 // CMeshO (MeshLab, float, with deleted-element tombstones) <-> fieldcvt::TriMesh (core, double,
 // compact). Pure translation: no cleaning, no repair; the core validates what it receives.
-#include <common/ml_mesh_type.h>
+#include "meshlab_types.h"
 
 #include "mesh.h"
 

@@ -3,9 +3,19 @@
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
+# FCVT_MESHLAB_HOST=ROOT (the debian13 tests, tests/debian13.cmake): the same tests against
+# MeshLab 2022.02 in the Debian 13 root ROOT, where fcvt-meshlab-host stands in for
+# meshlabserver (tests/debian13/stage-host.sh) and the plugin is the one our .deb installed
+# there (PLUGIN_SO is then unused).
+
 # stage_meshlab STAGE_DIR PLUGIN_SO -> prints the staged meshlabserver path
 stage_meshlab() {
-  "$FCVT_SOURCE_DIR/scripts/stage-meshlab.sh" "$1" "$2" >/dev/null || fail "staging MeshLab in $1"
+  if [ -n "${FCVT_MESHLAB_HOST:-}" ]; then
+    bash "$FCVT_SOURCE_DIR/tests/debian13/stage-host.sh" "$FCVT_MESHLAB_HOST" "$FCVT_SOURCE_DIR" "$1" >/dev/null \
+      || fail "staging the MeshLab 2022.02 host in $1"
+  else
+    "$FCVT_SOURCE_DIR/scripts/stage-meshlab.sh" "$1" "$2" >/dev/null || fail "staging MeshLab in $1"
+  fi
   echo "$1/bin/meshlabserver"
 }
 
@@ -15,7 +25,11 @@ run_meshlabserver() {
   local server="$1" log="$2"
   shift 2
   set +e
-  timeout 500 xvfb-run -a "$server" "$@" >"$log" 2>"$log.err"
+  if [ -n "${FCVT_MESHLAB_HOST:-}" ]; then  # no display needed (Qt's offscreen platform)
+    timeout 500 "$server" "$@" >"$log" 2>"$log.err"
+  else
+    timeout 500 xvfb-run -a "$server" "$@" >"$log" 2>"$log.err"
+  fi
   MLS_RC=$?
   set -e
   echo "--- meshlabserver $* (exit $MLS_RC); log:"

@@ -1,4 +1,4 @@
-#include "filter_fcvt.h"
+#include "fcvt_filters.h"
 
 #include <vcg/complex/allocate.h>
 
@@ -18,13 +18,18 @@
 
 #include "closest_point.h"
 #include "errors.h"
+#include "field.h"
 #include "field_drawing.h"
 #include "log_text.h"
 #include "mesh_check.h"
 #include "mesh_convert.h"
 #include "metrics.h"
+#include "progress.h"
+#include "remesh.h"
 #include "valence_colour.h"
 #include "working_frame.h"
+
+namespace fcvt_plugin {
 
 namespace {
 
@@ -64,26 +69,25 @@ enum DensityChoice { kDensityUniform = 0, kDensityCurvature = 1, kDensityVertexQ
 const QStringList kDensityLabels = {"uniform", "curvature", "vertex quality"};
 
 // A parameter that a script may lack (added after the first release): its value, or `fallback`.
-bool boolParam(const RichParameterList& par, const char* key, bool fallback)
+bool boolParam(const ParamValues& par, const char* key, bool fallback)
 {
     return par.hasParameter(key) ? par.getBool(key) : fallback;
 }
 
-double floatParam(const RichParameterList& par, const char* key, double fallback)
+double floatParam(const ParamValues& par, const char* key, double fallback)
 {
     return par.hasParameter(key) ? double(par.getFloat(key)) : fallback;
 }
 
 // The density source: the adaptive enum, or the bool of scripts from before it was one
 // (true = vertex quality); uniform when the script has neither.
-int densityChoice(const RichParameterList& par)
+int densityChoice(const ParamValues& par)
 {
-    if (!par.hasParameter(FilterFcvtPlugin::kAdaptive))
+    if (!par.hasParameter(kAdaptive))
         return kDensityUniform;
-    const Value& v = par.getParameterByName(FilterFcvtPlugin::kAdaptive).value();
-    if (v.isBool())
-        return v.getBool() ? kDensityVertexQuality : kDensityUniform;
-    return v.getInt();
+    if (par.isBool(kAdaptive))
+        return par.getBool(kAdaptive) ? kDensityVertexQuality : kDensityUniform;
+    return par.getEnum(kAdaptive);
 }
 
 // Mean length over the distinct (undirected) edges of the faces.
@@ -259,39 +263,128 @@ void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVe
     }
 }
 
-}  // namespace
+// The parameter declarations below read like both MeshLabs' own (par.addParam(RichInt(...)));
+// these build the neutral ParamDef the glue turns into its MeshLab's Rich* parameters.
+struct ParamList {
+    std::vector<ParamDef> defs;
+    void addParam(ParamDef p) { defs.push_back(std::move(p)); }
+};
 
-FilterFcvtPlugin::FilterFcvtPlugin()
+ParamDef makeParam(ParamDef::Type type, const char* name, double value, const QString& label,
+                   const QString& tooltip)
 {
-    typeList << FP_FCVT_REMESH << FP_FCVT_FIELD << FP_FCVT_QUALITY;
-    for (FilterIDType tt : types())
-        actionList << new QAction(filterName(tt), this);
+    ParamDef p;
+    p.type = type;
+    p.name = name;
+    p.value = value;
+    p.label = label;
+    p.tooltip = tooltip;
+    return p;
+}
+ParamDef RichInt(const char* name, int value, const QString& label, const QString& tooltip)
+{
+    return makeParam(ParamDef::Int, name, value, label, tooltip);
+}
+ParamDef RichFloat(const char* name, float value, const QString& label, const QString& tooltip)
+{
+    return makeParam(ParamDef::Float, name, double(value), label, tooltip);
+}
+ParamDef RichBool(const char* name, bool value, const QString& label, const QString& tooltip)
+{
+    return makeParam(ParamDef::Bool, name, value ? 1 : 0, label, tooltip);
+}
+ParamDef RichEnum(const char* name, int value, const QStringList& labels, const QString& label,
+                  const QString& tooltip)
+{
+    ParamDef p = makeParam(ParamDef::Enum, name, value, label, tooltip);
+    p.enumLabels = labels;
+    return p;
+}
+ParamDef RichAbsPerc(const char* name, float value, float min, float max, const QString& label,
+                     const QString& tooltip)
+{
+    ParamDef p = makeParam(ParamDef::AbsPerc, name, double(value), label, tooltip);
+    p.min = double(min);
+    p.max = double(max);
+    return p;
+}
+ParamDef RichMesh(const char* name, const MeshModel*, const MeshDocument*, const QString& label,
+                  const QString& tooltip)
+{
+    return makeParam(ParamDef::Mesh, name, 0, label, tooltip);
 }
 
-QString FilterFcvtPlugin::pluginName() const
+//! One filter run: the typed bodies of the three filters, with the plugin's log.
+class FilterRun {
+public:
+    explicit FilterRun(FilterLog& log) : log_(log) {}
+
+    bool applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
+    bool applyField(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
+    bool applyQuality(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
+
+private:
+    //! What the remeshing filter takes from the input layer besides the geometry.
+    struct RemeshInputs {
+        bool densityFromQuality = false;  //!< adaptive: ρ = per-vertex quality
+        bool featuresFromSelection = false;  //!< feature lines = border of the face selection
+        bool colorIrregular = false;      //!< colour the output's vertices by valence
+    };
+    //! The typed body of "Remeshing: Field-Aligned CVT (FCVT)".
+    bool remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params, const RemeshInputs& inputs,
+                    vcg::CallBackPos* cb);
+    //! The typed body of "Remeshing Quality Report (FCVT)" (`reference` null: no distances).
+    bool qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular, vcg::CallBackPos* cb);
+    //! The typed body of "Compute 6-RoSy Field" (at most `maxCrosses` crosses drawn).
+    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, int maxCrosses,
+                          vcg::CallBackPos* cb);
+    //! Takes back the GUI's "modified" mark on layer `layerId` after this filter (see the .cpp).
+    static void keepUnmodified(MeshDocument& md, int layerId);
+    //! Fails the filter: throws FilterFailure(message), which the glue reports.
+    [[noreturn]] bool fail(const QString& message) { throw FilterFailure(message); }
+    //! The current layer if it holds faces; otherwise fails.
+    MeshModel* currentTriangleLayer(MeshDocument& md);
+    void logReport(const fieldcvt::RemeshResult& result, const QString& layerName);
+
+    //! Log lines (info / warning, shown red in the GUI) through plainLogText(), so that MeshLab's
+    //! HTML log shows all of their text.
+    void logInfo(const QString& line);
+    void logWarning(const QString& line);
+    //! The layer's mesh for remeshing or a field (fcvt_plugin::toSurfaceMesh), with the
+    //! zero-area triangles it flipped logged.
+    fieldcvt::TriMesh surfaceOf(const MeshModel& layer);
+
+    FilterLog& log_;
+};
+
+void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, ParamList& par);
+
+}  // namespace
+
+QString pluginName()
 {
     return "FilterFCVT";
 }
 
-QString FilterFcvtPlugin::filterName(FilterIDType filter) const
+QString filterName(FilterId filter)
 {
     switch (filter) {
-    case FP_FCVT_REMESH:
+    case kRemesh:
         // Frozen: the key of .mlx scripts.
         return "Remeshing: Field-Aligned CVT (FCVT)";
-    case FP_FCVT_FIELD:
+    case kField:
         return "Compute 6-RoSy Field";
-    case FP_FCVT_QUALITY:
+    case kQuality:
         return "Remeshing Quality Report (FCVT)";
     default:
         return QString();
     }
 }
 
-QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
+QString filterInfo(FilterId filter)
 {
     switch (filter) {
-    case FP_FCVT_REMESH:
+    case kRemesh:
         // Kept short: MeshLab shows this text above the parameters, and a long one pushed the
         // last parameter out of the dialog's default size. The details are in the tooltips.
         return "Isotropic remeshing into a new layer: a Centroidal Voronoi Tessellation restricted to "
@@ -300,7 +393,7 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "<b>\"Field-Aligned Isotropic Surface Remeshing\"</b>, Computer Graphics Forum. "
                "<i>Repair the input</i> (on) first welds seams, removes duplicate faces and splits "
                "non-manifold edges and non-orientable pieces (its tooltip says what, the log counts it).";
-    case FP_FCVT_FIELD:
+    case kField:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
                "boundaries and sharp edges, or the maximal / minimal principal-curvature "
@@ -310,7 +403,7 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
                "a cross of thin strips, lifted a little off the surface, at each vertex (at most "
                "'Crosses drawn' of them, on a uniform grid). The geometry of the current mesh is "
                "unchanged.";
-    case FP_FCVT_QUALITY:
+    case kQuality:
         return "Writes the remeshing quality figures of the current mesh to the log, as in Table 2 "
                "of <b>\"Field-Aligned Isotropic Surface Remeshing\"</b>: Q_min and Q_avg (triangle "
                "quality 2&radic;3&middot;area / (half-perimeter &middot; longest edge), 1 for an "
@@ -329,59 +422,71 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
     }
 }
 
-MeshFilterInterface::FilterClass FilterFcvtPlugin::getClass(QAction* a)
+FilterKind filterKind(FilterId filter)
 {
-    switch (ID(a)) {
-    case FP_FCVT_REMESH:
-        return MeshFilterInterface::Remeshing;
-    case FP_FCVT_FIELD:
-        return MeshFilterInterface::Normal;
-    case FP_FCVT_QUALITY:
-        return FilterClass(MeshFilterInterface::Measure | MeshFilterInterface::VertexColoring);
+    switch (filter) {
+    case kRemesh:
+        return FilterKind::Remeshing;
+    case kField:
+        return FilterKind::Normal;
+    case kQuality:
     default:
-        return MeshFilterInterface::Generic;
+        return FilterKind::MeasureAndVertexColouring;
     }
 }
 
-MeshFilterInterface::FILTER_ARITY FilterFcvtPlugin::filterArity(QAction*) const
-{
-    return SINGLE_MESH;
-}
-
-int FilterFcvtPlugin::getRequirements(QAction*)
-{
-    return MeshModel::MM_NONE;
-}
-
-int FilterFcvtPlugin::getPreConditions(QAction*) const
+int preConditions(FilterId)
 {
     return MeshModel::MM_FACENUMBER;
 }
 
-int FilterFcvtPlugin::postCondition(QAction* a) const
+int postCondition(FilterId filter)
 {
     // The input layer's geometry and standard data are not modified (the field filter only adds
     // the custom attribute `rosy`); results are new layers. The quality report may colour the
     // current layer's vertices.
-    return ID(a) == FP_FCVT_QUALITY ? int(MeshModel::MM_VERTCOLOR) : int(MeshModel::MM_NONE);
+    return filter == kQuality ? int(MeshModel::MM_VERTCOLOR) : int(MeshModel::MM_NONE);
 }
 
-void FilterFcvtPlugin::initParameterSet(QAction* a, MeshModel& m, RichParameterList& par)
+std::vector<ParamDef> parameters(FilterId filter, const MeshModel* current)
 {
-    addParameters(a, nullptr, &m, par);
+    ParamList par;
+    addParameters(filter, nullptr, current, par);
+    return par.defs;
 }
 
-void FilterFcvtPlugin::initParameterSet(QAction* a, MeshDocument& md, RichParameterList& par)
+void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log,
+                 Callback* cb)
 {
-    addParameters(a, &md, md.mm(), par);
+    FilterRun run(log);
+    switch (filter) {
+    case kRemesh:
+        run.applyRemesh(md, par, cb);
+        break;
+    case kField:
+        run.applyField(md, par, cb);
+        break;
+    case kQuality:
+        run.applyQuality(md, par, cb);
+        break;
+    default:
+        throw FilterFailure("FCVT: unknown filter");
+    }
 }
 
-void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m, RichParameterList& par)
+QString unexpectedFailure(const std::exception* e)
+{
+    return e != nullptr ? QString("FCVT: %1").arg(QString::fromUtf8(e->what())) : QString("FCVT: unknown error");
+}
+
+namespace {
+
+void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, ParamList& par)
 {
     const int vertexCountDefault = defaultVertexCount(m);
     const float diagonal = bboxDiagonal(m);
-    switch (ID(a)) {
-    case FP_FCVT_REMESH: {
+    switch (a) {
+    case kRemesh: {
         // Core defaults are the single source of truth for everything but vertexCount.
         const fieldcvt::RemeshParams defaults;
         // The dialog's order: what most runs set first, the optimiser's knobs after. Scripts
@@ -441,6 +546,7 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
         par.addParam(RichBool(kFeatureSelection, false, parameterLabel(kFeatureSelection),
                               "Also treat the border of the input's face selection (edges between a "
                               "selected and an unselected face) as feature lines."));
+        // Added after issue 15's reordering (issue 17): at the end, like every new parameter.
         par.addParam(RichBool(kRepair, defaults.repair, parameterLabel(kRepair),
                               "Before remeshing, weld coincident and nearly coincident border "
                               "vertices (cracks, seams, T-junctions), remove duplicate and opposite "
@@ -450,7 +556,7 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
                               "which refuses non-manifold edges and non-orientable pieces."));
         break;
     }
-    case FP_FCVT_FIELD: {
+    case kField: {
         const fieldcvt::FieldParams defaults;
         par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.source),
                               fieldSourceLabels(kComputedFieldSources), parameterLabel(kFieldSource),
@@ -465,7 +571,7 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
                              "this (at least 1)."));
         break;
     }
-    case FP_FCVT_QUALITY: {
+    case kQuality: {
         // The default reference is the measured layer itself, which means "no distances".
         const QString description = parameterLabel(kReferenceLayer);
         const char* tooltip = "The layer d_RMS and d_H are measured against (e.g. the input of the "
@@ -485,30 +591,7 @@ void FilterFcvtPlugin::addParameters(QAction* a, MeshDocument* md, MeshModel* m,
     }
 }
 
-bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par,
-                                   vcg::CallBackPos* cb)
-{
-    // Nothing may escape into MeshLab: the GUI catches only std::bad_alloc and meshlabserver
-    // nothing at all, so an exception would terminate the application.
-    try {
-        switch (ID(a)) {
-        case FP_FCVT_REMESH:
-            return applyRemesh(md, par, cb);
-        case FP_FCVT_FIELD:
-            return applyField(md, par, cb);
-        case FP_FCVT_QUALITY:
-            return applyQuality(md, par, cb);
-        default:
-            return fail("FCVT: unknown filter");
-        }
-    } catch (const std::exception& e) {
-        return fail(QString("FCVT: %1").arg(QString::fromUtf8(e.what())));
-    } catch (...) {
-        return fail("FCVT: unknown error");
-    }
-}
-
-bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& par,
+bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
                                    vcg::CallBackPos* cb)
 {
     int vertexCount = par.getInt(kVertexCount);
@@ -605,7 +688,7 @@ bool FilterFcvtPlugin::applyRemesh(MeshDocument& md, const RichParameterList& pa
     return remeshFcvt(md, params, inputs, cb);
 }
 
-bool FilterFcvtPlugin::applyQuality(MeshDocument& md, const RichParameterList& par,
+bool FilterRun::applyQuality(MeshDocument& md, const ParamValues& par,
                                     vcg::CallBackPos* cb)
 {
     MeshModel* mesh = currentTriangleLayer(md);
@@ -615,7 +698,7 @@ bool FilterFcvtPlugin::applyQuality(MeshDocument& md, const RichParameterList& p
     return qualityReport(*mesh, reference == mesh ? nullptr : reference, par.getBool(kColorIrregular), cb);
 }
 
-bool FilterFcvtPlugin::applyField(MeshDocument& md, const RichParameterList& par,
+bool FilterRun::applyField(MeshDocument& md, const ParamValues& par,
                                   vcg::CallBackPos* cb)
 {
     const int fieldSource = par.getEnum(kFieldSource);
@@ -637,7 +720,7 @@ bool FilterFcvtPlugin::applyField(MeshDocument& md, const RichParameterList& par
     return computeRosyField(md, params, maxCrosses, cb);
 }
 
-MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
+MeshModel* FilterRun::currentTriangleLayer(MeshDocument& md)
 {
     MeshModel* input = md.mm();
     if (input == nullptr) {
@@ -651,21 +734,19 @@ MeshModel* FilterFcvtPlugin::currentTriangleLayer(MeshDocument& md)
     return input;
 }
 
-fieldcvt::TriMesh FilterFcvtPlugin::surfaceOf(const MeshModel& layer)
+fieldcvt::TriMesh FilterRun::surfaceOf(const MeshModel& layer)
 {
     int flipped = 0;
     fieldcvt::TriMesh mesh = fcvt_plugin::toSurfaceMesh(layer.cm, flipped);
     if (flipped > 0)
-        Log(GLLogStream::WARNING,
-            QString("FCVT input: flipped %1 zero-area triangles of '%2' into their neighbours (a fan "
-                    "over a polygon's straight corner; removing them would tear the surface)")
-                .arg(flipped)
-                .arg(layer.label())
-                .toStdString());
+        logWarning(QString("FCVT input: flipped %1 zero-area triangles of '%2' into their neighbours (a fan "
+                           "over a polygon's straight corner; removing them would tear the surface)")
+                       .arg(flipped)
+                       .arg(layer.label()));
     return mesh;
 }
 
-bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
+bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
                                   const RemeshInputs& inputs, vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
@@ -786,7 +867,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
                 rosy[i] = toPoint3m(result.outputDirections[i]);
         }
         output->cm.Tr = input->cm.Tr;
-        output->UpdateBoxAndNormals();
+        updateBoxAndNormals(*output);
         KeptData keep;
         keep.colour = input->hasDataMask(MeshModel::MM_VERTCOLOR);
         keep.quality = input->hasDataMask(MeshModel::MM_VERTQUALITY);
@@ -816,7 +897,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
             logInfo(("FCVT valence colours on '" + output->label() + "': " +
                  applyValenceColours(result.mesh, *output)));
     } catch (...) {
-        md.delMesh(output);
+        removeLayer(md, output);
         md.setCurrentMesh(input->id());
         throw;
     }
@@ -856,7 +937,7 @@ bool FilterFcvtPlugin::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams
     return true;
 }
 
-bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
+bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
                                         int maxCrosses, vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
@@ -898,9 +979,9 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
         stats = fcvt_plugin::drawField(clean, field, drawing->cm, maxCrosses);
         drawing->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_COLOR);
         drawing->cm.Tr = input->cm.Tr;
-        drawing->UpdateBoxAndNormals();
+        updateBoxAndNormals(*drawing);
     } catch (...) {
-        md.delMesh(drawing);
+        removeLayer(md, drawing);
         md.setCurrentMesh(input->id());
         throw;
     }
@@ -946,7 +1027,7 @@ bool FilterFcvtPlugin::computeRosyField(MeshDocument& md, const fieldcvt::FieldP
     return true;
 }
 
-void FilterFcvtPlugin::keepUnmodified(MeshDocument& md, int layerId)
+void FilterRun::keepUnmodified(MeshDocument& md, int layerId)
 {
     // MeshLab 2020.09's GUI marks the current layer modified after every filter that succeeds
     // (MainWindow::executeFilter: meshDoc()->mm()->setMeshModified()). The field filter only
@@ -965,7 +1046,7 @@ void FilterFcvtPlugin::keepUnmodified(MeshDocument& md, int layerId)
     });
 }
 
-bool FilterFcvtPlugin::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular,
+bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular,
                                      vcg::CallBackPos* cb)
 {
     if (reference != nullptr && reference->cm.fn == 0)
@@ -1014,24 +1095,17 @@ bool FilterFcvtPlugin::qualityReport(MeshModel& mesh, MeshModel* reference, bool
     return true;
 }
 
-bool FilterFcvtPlugin::fail(const QString& message)
+void FilterRun::logInfo(const QString& line)
 {
-    errorMessage = plainLogText(message);
-    logWarning(message);
-    return false;
+    log_.info(plainLogText(line));
 }
 
-void FilterFcvtPlugin::logInfo(const QString& line)
+void FilterRun::logWarning(const QString& line)
 {
-    Log(plainLogText(line).toStdString());
+    log_.warning(plainLogText(line));
 }
 
-void FilterFcvtPlugin::logWarning(const QString& line)
-{
-    Log(GLLogStream::WARNING, plainLogText(line).toStdString());
-}
-
-void FilterFcvtPlugin::logReport(const fieldcvt::RemeshResult& r, const QString& layerName)
+void FilterRun::logReport(const fieldcvt::RemeshResult& r, const QString& layerName)
 {
     const fieldcvt::QualityMetrics& m = r.metrics;
     logInfo(QString("FCVT: new layer '%1': %2 vertices, %3 faces, %4 energy evaluations")
@@ -1076,4 +1150,6 @@ void FilterFcvtPlugin::logReport(const fieldcvt::RemeshResult& r, const QString&
         logWarning(QString::fromStdString("FCVT warning: " + w));
 }
 
-MESHLAB_PLUGIN_NAME_EXPORTER(FilterFcvtPlugin)
+
+}  // namespace
+}  // namespace fcvt_plugin

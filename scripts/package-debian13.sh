@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# Builds the Debian 13 (trixie) package of the MeshLab plugin on a Debian 12 machine, as root:
+#
+#   bash scripts/package-debian13.sh OUTDIR
+#
+# 1. a Debian 13 root, made with debootstrap in BUILD/debian13-root (BUILD: $FCVT_BUILD_DIR,
+#    default build/), from the archive this machine's apt already uses (scripts/apt-archive.sh);
+#    build dependencies and MeshLab 2022.02 installed in it by apt;
+# 2. MeshLab 2022.02's plugin headers and its vcglib from Debian 13's `meshlab` source package
+#    (apt-get source inside the root; when the archive serves only the .orig tarball, that
+#    tarball, unpacked without Debian's patches: the script says which it used);
+# 3. the core and the plugin built inside the root against them (FCVT_MESHLAB_API=2022) and
+#    linked to Debian 13's libmeshlab-common;
+# 4. OUTDIR/meshlab-plugin-fcvt_<version>+deb13_amd64.deb, depending on meshlab (>= 2022.02).
+#
+# A complete root from an earlier run is reused (the marker BUILD/debian13-root/.fcvt-ready);
+# FCVT_DEBIAN13_FRESH=1 makes a new one. Everything stays inside BUILD. Exit status 77 (what
+# CTest counts as skipped) when not run as root or when debootstrap fails (e.g. no network).
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+[ $# -eq 1 ] || { echo "usage: $0 OUTDIR" >&2; exit 2; }
+mkdir -p "$1"
+out="$(cd "$1" && pwd)"
+build="${FCVT_BUILD_DIR:-$here/build}"
+mkdir -p "$build"
+build="$(cd "$build" && pwd)"
+root="$build/debian13-root"
+d13build="$build/debian13-build"   # the in-root build tree (same path inside the root)
+export DEBIAN_FRONTEND=noninteractive
+
+skip() { echo "package-debian13: SKIP: $*" >&2; exit 77; }
+step_start=0
+step() { step_start=$(date +%s); echo "== package-debian13: $*"; }
+step_done() { echo "   done in $(( $(date +%s) - step_start )) s"; }
+
+[ "$(id -u)" -eq 0 ] || skip "needs root (debootstrap and chroot)"
+command -v debootstrap >/dev/null || apt-get install -y -qq --no-install-recommends debootstrap >/dev/null \
+  || skip "debootstrap is not installed and could not be installed"
+in_root() { bash "$here/scripts/debian13-chroot.sh" "$root" --bind "$here" --bind "$build" -- "$@"; }
+
+packages=(
+  build-essential cmake pkg-config dpkg-dev xz-utils
+  libeigen3-dev liblbfgspp-dev libnanoflann-dev
+  qtbase5-dev libqt5opengl5-dev libglew-dev libglu1-mesa-dev
+  meshlab xvfb xauth x11-apps x11-utils
+  # meshlab's Recommends that its own plugins link (an ordinary apt install brings them):
+  # without them MeshLab skips filter_func ("Conditional Face Selection"), filter_qhull, ...
+  lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 libxerces-c3.2t64
+)
+
+if [ "${FCVT_DEBIAN13_FRESH:-0}" = 1 ] || [ ! -e "$root/.fcvt-ready" ]; then
+  archive="$(bash "$here/scripts/apt-archive.sh" trixie)" || skip "no Debian archive in this machine's apt sources"
+  rm -rf "$root"
+  step "debootstrap trixie into $root"
+  debootstrap --variant=minbase trixie "$root" "$archive" >"$build/debian13-debootstrap.log" 2>&1 || {
+    tail -n 20 "$build/debian13-debootstrap.log" >&2
+    rm -rf "$root"
+    skip "debootstrap failed (log: $build/debian13-debootstrap.log)"
+  }
+  step_done
+  printf 'Types: deb deb-src\nURIs: %s\nSuites: trixie\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+    "$archive" > "$root/etc/apt/sources.list.d/debian.sources"
+  rm -f "$root/etc/apt/sources.list"
+  step "apt-get install ${#packages[@]} packages (MeshLab 2022.02, build dependencies, Xvfb) in the root"
+  in_root apt-get update -qq
+  in_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >"$build/debian13-apt.log" 2>&1 || {
+    tail -n 30 "$build/debian13-apt.log" >&2; echo "package-debian13: apt-get install failed in the root" >&2; exit 1; }
+  step_done
+  touch "$root/.fcvt-ready"
+fi
+echo "MeshLab in the root: $(in_root dpkg-query -W -f='${Version}' meshlab)"
+
+# MeshLab 2022.02's headers and vcglib: Debian 13's meshlab source package.
+src="$root/usr/src/meshlab"
+if [ ! -f "$src/src/common/plugins/interfaces/filter_plugin.h" ]; then
+  step "apt-get source meshlab (Debian 13)"
+  rm -rf "$root/usr/src/meshlab-get" "$src"
+  mkdir -p "$root/usr/src/meshlab-get"
+  chmod 777 "$root/usr/src/meshlab-get"   # apt's download sandbox user writes here
+  set +e
+  in_root sh -c 'cd /usr/src/meshlab-get && apt-get source -qq --download-only meshlab' \
+    >"$build/debian13-source.log" 2>&1
+  rc=$?
+  set -e
+  get="$root/usr/src/meshlab-get"
+  dsc="$(ls "$get"/meshlab_*.dsc 2>/dev/null | head -n 1 || true)"
+  orig="$(ls "$get"/meshlab_*.orig.tar.* 2>/dev/null | head -n 1 || true)"
+  if [ "$rc" -eq 0 ] && [ -n "$dsc" ]; then
+    in_root sh -c "cd /usr/src/meshlab-get && dpkg-source -x --no-check $(basename "$dsc") /usr/src/meshlab" >/dev/null
+    echo "   MeshLab source: the Debian source package $(basename "$dsc") (Debian patches applied)"
+  elif [ -n "$orig" ]; then
+    mkdir -p "$src"
+    tar -xf "$orig" -C "$src" --strip-components=1
+    echo "   MeshLab source: apt-get source could not fetch the whole package (exit $rc; see" \
+         "$build/debian13-source.log); using its upstream tarball $(basename "$orig"), without Debian's patches"
+  else
+    cat "$build/debian13-source.log" >&2
+    echo "package-debian13: apt-get source meshlab fetched neither the package nor its tarball" >&2
+    exit 1
+  fi
+  [ -f "$src/src/common/plugins/interfaces/filter_plugin.h" ] \
+    || { echo "package-debian13: no MeshLab 2022.02 plugin headers in $src" >&2; exit 1; }
+  step_done
+fi
+
+step "build the core and the plugin inside the root (MeshLab 2022.02 API)"
+in_root cmake -S "$here" -B "$d13build" -DCMAKE_BUILD_TYPE=Release \
+  -DFCVT_BUILD_CLI=OFF -DFCVT_BUILD_TESTS=OFF -DFCVT_BUILD_BENCH=OFF \
+  -DFCVT_MESHLAB_SOURCE_DIR=/usr/src/meshlab -DFCVT_MESHLAB_API=2022 >"$build/debian13-cmake.log" 2>&1 || {
+  cat "$build/debian13-cmake.log" >&2; exit 1; }
+in_root cmake --build "$d13build" -j "$(nproc)" --target filter_fcvt
+step_done
+
+step "cpack"
+rm -rf "$d13build/cpack"
+in_root sh -c "cd '$d13build' && cpack -G DEB -B '$d13build/cpack'" >"$build/debian13-cpack.log" 2>&1 || {
+  cat "$build/debian13-cpack.log" >&2; exit 1; }
+deb="$(ls "$d13build"/cpack/meshlab-plugin-fcvt_*_amd64.deb)"
+cp -f "$deb" "$out/"
+step_done
+echo "package-debian13: $out/$(basename "$deb")"
+echo "Depends: $(dpkg-deb -f "$deb" Depends)"
