@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -16,6 +17,17 @@
 namespace fieldcvt::io_detail {
 
 namespace {
+
+//! A vertex index read as a double, for an error message: as an integer where it is one a long
+//! long holds (converting a larger or fractional value would be undefined or misleading).
+std::string indexText(double v)
+{
+    if (std::isfinite(v) && std::fabs(v) < 9.0e18 && v == std::floor(v))
+        return std::to_string(static_cast<long long>(v));
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
 
 enum class Encoding { Ascii, LittleEndian, BigEndian };
 
@@ -246,8 +258,8 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                     const double v = in.value(p.size, p.isFloat, p.isSigned);
                     if (static_cast<int>(i) != indexList) continue;
                     if (!(v >= 0) || v >= mesh.vertexCount() || v != static_cast<int>(v))
-                        fail(path, "face " + std::to_string(n) + " has vertex index " + std::to_string(static_cast<long long>(v)) +
-                                       " out of range (" + std::to_string(mesh.vertexCount()) + " vertices)");
+                        fail(path, "face " + std::to_string(n) + " has vertex index " + indexText(v) + " out of range (" +
+                                       std::to_string(mesh.vertexCount()) + " vertices)");
                     polygon.push_back(static_cast<int>(v));
                 }
                 if (static_cast<int>(i) != indexList) continue;

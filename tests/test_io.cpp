@@ -405,6 +405,11 @@ TEST_F(IoTest, BrokenPly)
     expectIoError(write("ta.ply", ascii.substr(0, ascii.size() - 9)));
     expectIoError(write("h.ply", binary.substr(0, 30)));
     expectIoError(write("r.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n1 1 0\n3 0 1 7\n"));
+    // An index no integer type holds is named as read (converting it was undefined behaviour).
+    expectIoError(write("rh.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n1 1 0\n3 0 1 4.5e114\n"),
+                  "vertex index 4.5e+114 out of range");
+    expectIoError(write("rf.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n1 1 0\n3 0 1 1.5\n"),
+                  "vertex index 1.5 out of range");
     expectIoError(write("g.ply", "garbage\n"));
     expectIoError(write("e.ply", "ply\nformat ascii 1.0\nelement vertex\nend_header\n"), "malformed PLY header");
     expectIoError(write("p.ply", plyHeader("ascii", 3, 0) + "0 0 0\n1 0 0\n1 1 0\n"), "no faces");
