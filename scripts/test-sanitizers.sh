@@ -61,6 +61,8 @@ python3 "$here/fuzz/make_seeds.py" "$fz/seeds" || exit 1
 run_fuzzer() {  # NAME SEED_DIR MAX_LEN
   local name="$1" seeds="$2" max_len="$3"
   local corpus="$fz/corpus/$name" artifacts="$fz/artifacts/$name/"
+  # Artifacts of an earlier run in the same build folder are not this run's findings.
+  rm -rf "$artifacts"
   mkdir -p "$corpus" "$artifacts"
   echo "== $name for ${fuzz_seconds}s"
   # Corpus dir first (new inputs go there), then the seeds; fixed seed for the mutations.
