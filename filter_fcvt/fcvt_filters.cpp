@@ -340,6 +340,15 @@ private:
                           vcg::CallBackPos* cb);
     //! Takes back the GUI's "modified" mark on layer `layerId` after this filter (see the .cpp).
     static void keepUnmodified(MeshDocument& md, int layerId);
+    //! The field source (0..sources-1: a script may carry any integer as an enum value) and the
+    //! seed (0 or more), shared by the remeshing and the field filters; fails otherwise.
+    void checkFieldSourceAndSeed(int fieldSource, int sources, int seed)
+    {
+        if (fieldSource < 0 || fieldSource >= sources)
+            fail(QString("FCVT: %1 must be 0..%2 (got %3)").arg(parameterName(kFieldSource)).arg(sources - 1).arg(fieldSource));
+        if (seed < 0)
+            fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kSeed)).arg(seed));
+    }
     //! Fails the filter: throws FilterFailure(message), which the glue reports.
     [[noreturn]] bool fail(const QString& message) { throw FilterFailure(message); }
     //! The current layer if it holds faces; otherwise fails.
@@ -643,13 +652,7 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
     if (fcvtIterations < 0)
         return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kFcvtIterations)).arg(fcvtIterations));
     // A script may carry any integer as the enum value: MeshLab does not check the range.
-    if (fieldSource < 0 || fieldSource >= kAllFieldSources)
-        return fail(QString("FCVT: %1 must be 0..%2 (got %3)")
-                        .arg(parameterName(kFieldSource))
-                        .arg(kAllFieldSources - 1)
-                        .arg(fieldSource));
-    if (seed < 0)
-        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kSeed)).arg(seed));
+    checkFieldSourceAndSeed(fieldSource, kAllFieldSources, seed);
     // Parameters added after the first release are read with their defaults when a script lacks
     // them: MeshLab's GUI runs a script with the script's own list (MainWindow::runFilterScript).
     const fieldcvt::RemeshParams defaults;
@@ -703,13 +706,7 @@ bool FilterRun::applyField(MeshDocument& md, const ParamValues& par,
 {
     const int fieldSource = par.getEnum(kFieldSource);
     const int seed = par.getInt(kSeed);
-    if (fieldSource < 0 || fieldSource >= kComputedFieldSources)
-        return fail(QString("FCVT: %1 must be 0..%2 (got %3)")
-                        .arg(parameterName(kFieldSource))
-                        .arg(kComputedFieldSources - 1)
-                        .arg(fieldSource));
-    if (seed < 0)
-        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kSeed)).arg(seed));
+    checkFieldSourceAndSeed(fieldSource, kComputedFieldSources, seed);
 
     fieldcvt::FieldParams params;
     params.source = kFieldSources[fieldSource].source;
