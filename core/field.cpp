@@ -34,9 +34,11 @@ void checkField(const TriMesh& mesh, const DirectionField& field)
 // Boundary edges and edges whose dihedral angle exceeds `sharpAngle` fix the direction of their
 // vertices to the compatible average of their tangents (Jakob et al. 2015 constrain the field to
 // boundaries and creases the same way).
+// `borderConstrained` (when given) tells whether a border edge constrains a vertex.
 FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& normals, double sharpAngle,
-                                 bool alignToBorder)
+                                 bool alignToBorder, bool* borderConstrained = nullptr)
 {
+    if (borderConstrained) *borderConstrained = false;
     const int n = mesh.vertexCount();
     const double cosSharp = sharpAngle > 0 ? std::cos(sharpAngle * kPi / 180.0) : -2.0;
     std::vector<Vec3> faceNormals(mesh.faces.size());
@@ -58,6 +60,7 @@ FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& n
         const Vec3 t = mesh.vertices[b] - mesh.vertices[a];
         const double len = t.norm();
         if (!(len > 0)) continue;
+        if (borderConstrained && edges.isBorder(e)) *borderConstrained = true;
         tangents.emplace_back(a, t / len);
         tangents.emplace_back(b, t / len);
     }
@@ -77,14 +80,14 @@ FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& n
 }
 
 DirectionField solveWithConstraints(const TriMesh& mesh, std::vector<Vec3> normals, const FieldConstraints& constraints,
-                                    std::uint64_t seed, int iterations, FieldReport* report)
+                                    std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic = false)
 {
     DirectionField field;
     if (constraints.count() == mesh.vertexCount()) {
         field.directions = constraints.directions;  // nothing left to smooth
         if (report) *report = FieldReport{};
     } else {
-        field.directions = solveField(mesh, normals, constraints, seed, std::max(iterations, 0), report);
+        field.directions = solveField(mesh, normals, constraints, seed, std::max(iterations, 0), report, intrinsic);
     }
     if (report) report->constrainedVertices = constraints.count();
     field.normals = std::move(normals);
@@ -155,8 +158,17 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params, Fiel
     std::vector<Vec3> normals = vertexNormals(mesh);
     switch (params.source) {
     case FieldSource::Extrinsic: {
-        const FieldConstraints constraints = edgeConstraints(mesh, normals, params.sharpAngle, params.alignToBorder);
-        return solveWithConstraints(mesh, std::move(normals), constraints, params.seed, params.smoothingIterations, report);
+        bool borderConstrained = false;
+        const FieldConstraints constraints =
+            edgeConstraints(mesh, normals, params.sharpAngle, params.alignToBorder, &borderConstrained);
+        // A border constraint and the extrinsic energy disagree wherever the surface bends
+        // along the border (a cylinder's rims: the extrinsic optimum inside is axis-aligned, 30°
+        // off the rim direction mod 60°, and the field twists in between); the intrinsic energy
+        // lets the border's direction propagate (FieldSmoothness).
+        const bool intrinsic = params.smoothness == FieldSmoothness::Intrinsic ||
+                               (params.smoothness == FieldSmoothness::Auto && borderConstrained);
+        return solveWithConstraints(mesh, std::move(normals), constraints, params.seed, params.smoothingIterations, report,
+                                    intrinsic);
     }
     case FieldSource::CurvatureMax:
     case FieldSource::CurvatureMin: {

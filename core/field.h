@@ -27,6 +27,21 @@ enum class FieldSource {
 FieldSource fieldSourceFromName(const std::string& name);
 std::string fieldSourceName(FieldSource source);
 
+//! Which smoothness the extrinsic source's solver minimises (Jakob et al. 2015 offer both).
+enum class FieldSmoothness {
+    //! Intrinsic where the border constrains the field (alignToBorder on a mesh with a border),
+    //! extrinsic otherwise.
+    Auto,
+    //! Σ ||d_i' − d_j'||² in 3D (eq. 3): penalises the tangent planes' turning too, so on a
+    //! cylinder it is zero only for a field along the axis, and a rim constraint (30° off that,
+    //! mod 60°) makes the field twist between the rims and the middle.
+    Extrinsic,
+    //! The same after carrying d_j to i's tangent plane by the smallest rotation (discrete
+    //! Levi-Civita transport): zero for any parallel field, so on a developable surface the
+    //! border's alignment propagates without cost.
+    Intrinsic,
+};
+
 struct FieldParams {
     FieldSource source = FieldSource::Extrinsic;
     std::uint64_t seed = 1;        //!< seed of the random initial directions (extrinsic)
@@ -35,9 +50,11 @@ struct FieldParams {
     //! like boundary edges; <= 0 disables crease constraints.
     double sharpAngle = 60.0;
     //! Border edges constrain the field to their tangent (extrinsic source). Turn off where the
-    //! border and the smooth field disagree, e.g. an open cylinder (rim tangent ⟂ axis, which no
-    //! 6-RoSy representative of an axis-aligned field is) or a square (edges 90° apart).
+    //! borders disagree with each other, e.g. a square (edges 90° apart). (An open cylinder's
+    //! rims are fine with the Auto smoothness: the field follows the rings everywhere; off, it
+    //! follows the axis, which no 6-RoSy representative of a rim tangent matches.)
     bool alignToBorder = true;
+    FieldSmoothness smoothness = FieldSmoothness::Auto;  //!< extrinsic source only
 };
 
 //! Computes the field at every vertex of `mesh` (which must be a clean triangle mesh: see
@@ -47,8 +64,9 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params);
 //! What one computeField run did (for tests, benchmarks and reports).
 struct FieldReport {
     std::vector<int> levelVertexCounts;  //!< vertices per hierarchy level, finest (the input) first
-    //! Extrinsic energy (extrinsicEnergy) of the field on the input mesh: [0] the random initial
-    //! field, then after smoothing each level, coarsest first, prolongated to the input mesh.
+    //! Energy minimised (extrinsicEnergy, or its intrinsic counterpart: FieldSmoothness) of the
+    //! field on the input mesh: [0] the random initial field, then after smoothing each level,
+    //! coarsest first, prolongated to the input mesh.
     std::vector<double> levelEnergies;
     //! Per level, coarsest first: that level's weighted energy before smoothing, then after each
     //! Gauss–Seidel sweep (non-increasing).

@@ -243,19 +243,21 @@ FieldHierarchyLevels buildFieldHierarchy(const TriMesh& mesh, const std::vector<
     return h;
 }
 
-double graphEnergy(const FieldGraph& g, const std::vector<Vec3>& d)
+double graphEnergy(const FieldGraph& g, const std::vector<Vec3>& d, bool intrinsic)
 {
     double energy = 0;
     for (int i = 0; i < g.vertexCount(); ++i)
         for (int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) {
             const int j = g.neighbours[e];
-            if (j > i) energy += g.weights[e] * rosy::edgeEnergy(d[i], g.normals[i], d[j], g.normals[j]);
+            if (j <= i) continue;
+            energy += g.weights[e] * (intrinsic ? rosy::edgeEnergyIntrinsic(d[i], g.normals[i], d[j], g.normals[j])
+                                                : rosy::edgeEnergy(d[i], g.normals[i], d[j], g.normals[j]));
         }
     return energy;
 }
 
 void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<unsigned char>* fixed, int iterations,
-                 std::vector<double>* energies)
+                 std::vector<double>* energies, bool intrinsic)
 {
     const int n = g.vertexCount();
     const int colours = static_cast<int>(g.colourOffsets.size()) - 1;
@@ -287,7 +289,12 @@ void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<un
                 double x = 0, y = 0;  // Σ_j w_ij R^{−p_j} b_j in the frame (d_i, t_i)
                 for (int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) {
                     const int j = g.neighbours[e];
-                    const double m00 = di.dot(d[j]), m01 = di.dot(t[j]), m10 = ti.dot(d[j]), m11 = ti.dot(t[j]);
+                    Vec3 dj = d[j], tj = t[j];
+                    if (intrinsic) {  // j's frame carried to i's plane (a rotation: still orthonormal)
+                        dj = rosy::rotateIntoPlane(dj, g.normals[j], g.normals[i]);
+                        tj = rosy::rotateIntoPlane(tj, g.normals[j], g.normals[i]);
+                    }
+                    const double m00 = di.dot(dj), m01 = di.dot(tj), m10 = ti.dot(dj), m11 = ti.dot(tj);
                     // a_p · c_q = cq·u_p + sq·v_p with (u_p, v_p) = cp·(m00, m01) + sp·(m10, m11).
                     double value[9];
                     for (int p = 0; p < 3; ++p) {
@@ -324,13 +331,13 @@ void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<un
         }
         if (energies) {
 #pragma omp single
-            energies->push_back(graphEnergy(g, d));  // implicit barrier after single
+            energies->push_back(graphEnergy(g, d, intrinsic));  // implicit barrier after single
         }
     }
 }
 
 std::vector<Vec3> solveField(const TriMesh& mesh, const std::vector<Vec3>& normals, const FieldConstraints& constraints,
-                             std::uint64_t seed, int iterations, FieldReport* report)
+                             std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic)
 {
     const FieldHierarchyLevels h = buildFieldHierarchy(mesh, normals);
     const int levels = static_cast<int>(h.levels.size());
@@ -386,22 +393,22 @@ std::vector<Vec3> solveField(const TriMesh& mesh, const std::vector<Vec3>& norma
                 if (!fixed[l - 1][v]) normalisedTangent(scratch[h.parents[l - 1][v]], h.levels[l - 1].normals[v], finer[v]);
             scratch.swap(finer);
         }
-        return graphEnergy(h.levels[0], scratch);
+        return graphEnergy(h.levels[0], scratch, intrinsic);
     };
     if (report) {
         report->levelVertexCounts.clear();
         for (const FieldGraph& g : h.levels) report->levelVertexCounts.push_back(g.vertexCount());
-        report->levelEnergies.assign(1, graphEnergy(h.levels[0], dirs[0]));
+        report->levelEnergies.assign(1, graphEnergy(h.levels[0], dirs[0], intrinsic));
         report->sweepEnergies.clear();
     }
 
     for (int l = levels - 1; l >= 0; --l) {
         std::vector<double>* trace = nullptr;
         if (report) {
-            report->sweepEnergies.emplace_back(1, graphEnergy(h.levels[l], dirs[l]));
+            report->sweepEnergies.emplace_back(1, graphEnergy(h.levels[l], dirs[l], intrinsic));
             trace = &report->sweepEnergies.back();
         }
-        smoothLevel(h.levels[l], dirs[l], &fixed[l], iterations, trace);
+        smoothLevel(h.levels[l], dirs[l], &fixed[l], iterations, trace, intrinsic);
         if (report) report->levelEnergies.push_back(energyOnInput(l));
         if (l == 0) break;
         // Prolongation: each child takes its parent's direction, re-projected on its own

@@ -61,6 +61,28 @@ inline double edgeEnergy(const Vec3& di, const Vec3& ni, const Vec3& dj, const V
     return (a[k] - b).squaredNorm();
 }
 
+//! v (tangent at the unit normal `from`) carried to the tangent plane of the unit normal `to` by
+//! the smallest rotation taking `from` to `to` (Rodrigues' formula about from × to): the
+//! discrete Levi-Civita transport along an edge that the intrinsic compatibility of Jakob et
+//! al. 2015 (`rotate_vector_into_plane`) uses. Identity when the normals are (nearly) opposite,
+//! where that rotation is not defined.
+inline Vec3 rotateIntoPlane(const Vec3& v, const Vec3& from, const Vec3& to)
+{
+    const double c = from.dot(to);
+    if (!(c > -1 + 1e-9)) return v;
+    const Vec3 axis = from.cross(to);  // |axis| = sin θ, so (1 − cos θ)/sin² θ = 1/(1 + cos θ)
+    return c * v + axis.cross(v) + (axis.dot(v) / (1 + c)) * axis;
+}
+
+//! Squared distance between the closest pair of representatives after carrying (d_j, n_j) to
+//! i's tangent plane (rotateIntoPlane): the intrinsic counterpart of edgeEnergy. It vanishes
+//! for a field that is parallel for that transport, e.g. any constant-angle field on a
+//! cylinder, where the extrinsic energy is zero only along the axis.
+inline double edgeEnergyIntrinsic(const Vec3& di, const Vec3& ni, const Vec3& dj, const Vec3& nj)
+{
+    return edgeEnergy(di, ni, rotateIntoPlane(dj, nj, ni), ni);
+}
+
 //! A unit vector orthogonal to the unit vector n (deterministic).
 Vec3 anyTangent(const Vec3& n);
 
@@ -100,24 +122,27 @@ struct FieldConstraints {
 //! greedy matching of the edges (Jakob et al. 2015, §5 "hierarchy"), until a few dozen remain.
 FieldHierarchyLevels buildFieldHierarchy(const TriMesh& mesh, const std::vector<Vec3>& normals);
 
-//! Σ_edges w_ij ||d_i' − d_j'||² over the graph (each undirected edge once).
-double graphEnergy(const FieldGraph& graph, const std::vector<Vec3>& directions);
+//! Σ_edges w_ij ||d_i' − d_j'||² over the graph (each undirected edge once); with `intrinsic`,
+//! d_j is first carried to i's tangent plane (rosy::edgeEnergyIntrinsic).
+double graphEnergy(const FieldGraph& graph, const std::vector<Vec3>& directions, bool intrinsic = false);
 
 //! `iterations` Gauss–Seidel sweeps over `graph` (colour class by colour class). Each free
 //! vertex's direction becomes the exact minimiser of its local energy for the current matching:
 //! normalise(P_i Σ_j w_ij R_i^{-k_j} b_j), where (R_i^{k_j} d_i, b_j) is the closest pair with
 //! neighbour j. Keeping the matching fixed, this cannot raise the energy; re-matching can only
 //! lower it further, so the energy is non-increasing sweep after sweep. Appends the energy
-//! after each sweep to `energies` when given.
+//! after each sweep to `energies` when given. With `intrinsic`, each neighbour's frame is first
+//! carried to i's tangent plane (rosy::rotateIntoPlane) and the energy is the intrinsic one.
 void smoothLevel(const FieldGraph& graph, std::vector<Vec3>& directions, const std::vector<unsigned char>* fixed,
-                 int iterations, std::vector<double>* energies = nullptr);
+                 int iterations, std::vector<double>* energies = nullptr, bool intrinsic = false);
 
 //! The whole multi-resolution solve: random tangent directions at level 0 from
 //! std::mt19937_64(seed), restricted up the hierarchy, then from the coarsest level down:
 //! smooth, prolongate (project the parent's direction on the child's tangent plane).
-//! Constrained vertices (and coarse vertices containing one) keep their direction.
+//! Constrained vertices (and coarse vertices containing one) keep their direction. `intrinsic`
+//! selects the energy of every level (smoothLevel); the report's energies are that energy.
 std::vector<Vec3> solveField(const TriMesh& mesh, const std::vector<Vec3>& normals, const FieldConstraints& constraints,
-                             std::uint64_t seed, int iterations, FieldReport* report);
+                             std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic = false);
 
 //! The 6-RoSy-compatible average of tangent directions at a vertex of normal n: each next one
 //! is added as its representative closest to the running sum. Returns false when it vanishes.
