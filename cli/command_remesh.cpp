@@ -41,8 +41,12 @@ void printUsage()
         "                        curvature-max, curvature-min, or user (IN's PLY vertex properties\n"
         "                        rosy_x rosy_y rosy_z) (default %s)\n"
         "  --lambda L            weight of the field-alignment term, >= 0; 0 = pure CVT (default %g)\n"
+        "  --lloyd-iterations K  Lloyd steps from the random start before L-BFGS, >= 0 (default %d)\n"
         "  --cvt-iterations A    L-BFGS iterations on the CVT energy, >= 0 (default %d)\n"
         "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d)\n"
+        "  --full-surface        optimise on the input itself, as the paper does, even when it has many\n"
+        "                        more faces than the output (by default such an input is optimised on\n"
+        "                        a coarser copy, %d faces per vertex, and the result put back on it)\n"
         "  --no-valence          skip the valence optimisation (flips, collapses, splits towards valence\n"
         "                        6, 4 on boundaries, then a relaxation; on by default)\n"
         "  --no-repair           only check the input, as before the repair stage: refuse non-manifold\n"
@@ -65,8 +69,8 @@ void printUsage()
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise)\n"
         "  -h, --help            show this help\n",
-        vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.cvtIterations,
-        defaults.fcvtIterations, defaults.featureAngleDegrees, defaults.gradation,
+        vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.lloydIterations, defaults.cvtIterations,
+        defaults.fcvtIterations, defaults.optimisationFacesPerSample, defaults.featureAngleDegrees, defaults.gradation,
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
@@ -107,12 +111,14 @@ RemeshParams paramsFrom(const Arguments& a)
     if (a.has("vertices")) p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, kMinVertexCount, kMaxVertexCount));
     p.fieldSource = fieldOption(a, p.fieldSource, true);
     p.lambda = a.number("lambda", p.lambda, 0.0);
+    p.lloydIterations = static_cast<int>(a.integer("lloyd-iterations", p.lloydIterations, 0, INT_MAX));
     p.cvtIterations = static_cast<int>(a.integer("cvt-iterations", p.cvtIterations, 0, INT_MAX));
     p.fcvtIterations = static_cast<int>(a.integer("fcvt-iterations", p.fcvtIterations, 0, INT_MAX));
     p.seed = a.unsignedInteger("seed", p.seed);
     p.threads = static_cast<int>(a.integer("threads", p.threads, 0, 4096));
     p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds, 0.0);
     p.valenceOptimization = !a.flag("no-valence");
+    if (a.flag("full-surface")) p.optimisationFacesPerSample = 0;
     p.repair = !a.flag("no-repair");
     p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees, 0.0);
     if (p.featureAngleDegrees > 180)
@@ -143,7 +149,8 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"feature_angle", p.featureAngleDegrees},
             {"adaptive", p.density == DensitySource::Curvature ? "curvature" : "none"},
             {"gradation", p.gradation},
-            {"repair", p.repair}};
+            {"repair", p.repair},
+            {"optimisation_faces_per_sample", p.optimisationFacesPerSample}};
 }
 
 }  // namespace
@@ -151,9 +158,10 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
 int runRemesh(const std::vector<std::string>& args)
 {
     const Arguments a(args,
-                      {"vertices", "target-length", "field", "lambda", "cvt-iterations", "fcvt-iterations", "seed", "threads",
+                      {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations", "seed",
+                       "threads",
                        "time-limit", "report", "feature-angle", "adaptive", "gradation"},
-                      {"quiet", "help", "no-valence", "no-repair"});
+                      {"quiet", "help", "no-valence", "no-repair", "full-surface"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -227,6 +235,7 @@ int runRemesh(const std::vector<std::string>& args)
                                                {"faces", result.mesh.faceCount()},
                                                {"mean_edge_length", meanEdge},
                                                {"evaluations", result.evaluations},
+                                               {"optimisation_faces", result.optimisationFaces},
                                                {"time_s", times},
                                                {"metrics", metricsJson(result.metrics)},
                                                {"input", topologyJson(result.inputTopology)},

@@ -9,6 +9,7 @@
 #include "optimize.h"
 #include "rdt.h"
 #include "sampling.h"
+#include "simplify.h"
 #include "boundary.h"
 #include "feature_lines.h"
 #include "valence.h"
@@ -45,6 +46,7 @@ void validate(const RemeshParams& p)
     if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
         throw InvalidInputError("iteration counts must be >= 0");
     if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
+    if (p.optimisationFacesPerSample < 0) throw InvalidInputError("optimisation faces per sample must be >= 0");
     if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");
     if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds)) throw InvalidInputError("time limit must be >= 0 seconds");
     if (!(p.featureAngleDegrees >= 0 && p.featureAngleDegrees <= 180))
@@ -136,7 +138,6 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     TriMesh surface;
     std::vector<int> cleanIndex;  // input vertex -> surface vertex
     Normalisation frame;
-    std::vector<double> rho;  // CVT density per surface face (eq. 1), empty = uniform
     pipeline.run("prepare", [&] {
         InputReport report;
         RepairParams repairParams = params.repairParams;
@@ -147,40 +148,71 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         result.inputTopology = computeTopology(surface);
         frame = workingFrame(surface, sampleCount);
         for (Vec3& p : surface.vertices) p = frame.toWork(p);
-
-        // Adaptive density (density.h): μ per surface vertex, normalised to an area-weighted
-        // mean of 1, so the scale above (mean cell area 1, sampleCount samples) stays right on
-        // average; cells are then ~1/μ in area. ρ = μ² per face enters eq. 1.
-        const bool curvature = params.density == DensitySource::Curvature && params.gradation > 0;
-        if (curvature || params.density == DensitySource::PerVertex) {
-            // Uniform target edge length at the working scale: unit-area cells of a regular
-            // triangulation, sqrt(2 / sqrt(3)).
-            const double edgeLength = std::sqrt(2 / std::sqrt(3.0));
-            std::vector<double> mu = curvature ? curvatureDensity(surface, params.gradation, edgeLength)
-                                               : densityOnSurface(params.vertexDensity, cleanIndex, surface.vertexCount());
-            normaliseDensity(surface, mu);
-            rho = faceDensity(surface, mu);
-        }
     });
+
+    // Feature lines (if asked for) on the input: their vertices stay in the coarse surface.
+    int ignored = 0;
+    const std::vector<std::array<int, 2>> userFeatureEdges = featureEdgesOnSurface(params.featureEdges, cleanIndex);
+    // Corners at least 2 apart at the working scale (about two edge lengths): closer fixed
+    // samples make slivers and pull border samples off the holes of jagged outlines (bunny 5000:
+    // spacing 0.6 gave θ_min 24° and a border 0.9 % away, 2 gives 29.6° and 0.43 %).
+    constexpr double kCornerSpacing = 2.0;
+    FeatureLines features = detectFeatures(surface, params.featureAngleDegrees, userFeatureEdges, &ignored, kCornerSpacing);
+    if (ignored > 0)
+        result.warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
+
+    // The surface the optimisation runs on: the input, or its coarser copy (simplify.h), whose
+    // vertices are input vertices (`toCoarse` maps them; -1 = removed).
+    SimplifyResult coarse;
+    const bool simplified = params.optimisationFacesPerSample > 0 &&
+                            double(surface.faceCount()) > 1.5 * params.optimisationFacesPerSample * double(sampleCount);
+    if (simplified) {
+        pipeline.run("simplify", [&] {
+            SimplifyParams simplify;
+            simplify.targetFaces = params.optimisationFacesPerSample * sampleCount;
+            // 5 % of the output's edge length (about 1.07 at the working scale): the coarse
+            // surface is within that of the input, far inside the output's own sag.
+            simplify.maxError = 0.05;
+            simplify.locked.assign(surface.vertices.size(), 0);
+            for (const auto& [a, b] : features.edges) simplify.locked[a] = simplify.locked[b] = 1;
+            coarse = simplifyMesh(surface, simplify);
+            // The same feature edges (both ends kept, so still edges), corners found again.
+            std::vector<std::array<int, 2>> edges;
+            for (const auto& [a, b] : features.edges) edges.push_back({coarse.coarseVertex[a], coarse.coarseVertex[b]});
+            features = detectFeatures(coarse.mesh, 0, edges, nullptr, kCornerSpacing);
+        });
+    }
+    const TriMesh& optSurface = simplified ? coarse.mesh : surface;
+    result.optimisationFaces = optSurface.faceCount();
+    // Input vertex -> vertex of the optimisation surface (-1: none).
+    std::vector<int> optIndex = cleanIndex;
+    if (simplified)
+        for (int& v : optIndex) v = v >= 0 ? coarse.coarseVertex[v] : -1;
+
+    std::vector<double> rho;  // CVT density per face of the optimisation surface (eq. 1), empty = uniform
+    // Adaptive density (density.h): μ per vertex, normalised to an area-weighted mean of 1, so
+    // the scale above (mean cell area 1, sampleCount samples) stays right on average; cells are
+    // then ~1/μ in area. ρ = μ² per face enters eq. 1.
+    const bool curvature = params.density == DensitySource::Curvature && params.gradation > 0;
+    if (curvature || params.density == DensitySource::PerVertex) {
+        // Uniform target edge length at the working scale: unit-area cells of a regular
+        // triangulation, sqrt(2 / sqrt(3)).
+        const double edgeLength = std::sqrt(2 / std::sqrt(3.0));
+        std::vector<double> mu = curvature ? curvatureDensity(optSurface, params.gradation, edgeLength)
+                                           : densityOnSurface(params.vertexDensity, optIndex, optSurface.vertexCount());
+        normaliseDensity(optSurface, mu);
+        rho = faceDensity(optSurface, mu);
+    }
 
     // The field is needed when E_field is used (in the FCVT iterations only: measuring it during
     // the CVT iterations would cost a closest-point query per sample and evaluation).
     const bool useField = params.fcvtIterations > 0 && params.lambda > 0;
-    const std::vector<Segment> border = boundarySegments(surface);
-    // Feature lines (if asked for) and the corners of the lines and of the open border.
-    int ignored = 0;
-    // Corners at least 2 apart at the working scale (about two edge lengths): closer fixed
-    // samples make slivers and pull border samples off the holes of jagged outlines (bunny 5000:
-    // spacing 0.6 gave θ_min 24° and a border 0.9 % away, 2 gives 29.6° and 0.43 %).
-    const FeatureLines features = detectFeatures(surface, params.featureAngleDegrees,
-                                                 featureEdgesOnSurface(params.featureEdges, cleanIndex), &ignored, 2.0);
-    if (ignored > 0)
-        result.warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
+    const std::vector<Segment> border = boundarySegments(optSurface);  // the input's own border edges
     const bool constrained = !border.empty() || !features.empty();
     const double expectedEvaluations = params.lloydIterations + 1.1 * (params.cvtIterations + params.fcvtIterations) +
                                        (constrained ? params.boundaryIterations : 0) + 2;
-    EnergyFunction energy(surface, rho);
-    ClosestPointTree tree(surface);
+    EnergyFunction energy(optSurface, rho);
+    ClosestPointTree tree(optSurface);
     DirectionField field;
     std::string stage = "sampling";
     double best = std::numeric_limits<double>::infinity();
@@ -210,22 +242,22 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             stage = "field";
             pipeline.report(stage, 2);
             if (params.fieldSource == FieldSource::User) {
-                std::vector<Vec3> vectors(surface.vertices.size(), Vec3::Zero());
+                std::vector<Vec3> vectors(optSurface.vertices.size(), Vec3::Zero());
                 if (params.userDirections.size() != input.vertices.size())
                     throw InvalidInputError("the user field has " + std::to_string(params.userDirections.size()) +
                                             " vectors for " + std::to_string(input.vertices.size()) + " vertices");
                 for (size_t v = 0; v < input.vertices.size(); ++v)
-                    if (cleanIndex[v] >= 0) vectors[cleanIndex[v]] = params.userDirections[v];
-                field = fieldFromVectors(surface, vectors, params.seed);
+                    if (optIndex[v] >= 0) vectors[optIndex[v]] = params.userDirections[v];
+                field = fieldFromVectors(optSurface, vectors, params.seed);
             } else {
                 FieldParams fieldParams;
                 fieldParams.source = params.fieldSource;
                 fieldParams.seed = params.seed;
                 // The field follows the same creases the samples are snapped to (§5).
                 if (params.featureAngleDegrees > 0) fieldParams.sharpAngle = params.featureAngleDegrees;
-                field = computeField(surface, fieldParams);
+                field = computeField(optSurface, fieldParams);
             }
-            result.singularities = findSingularities(surface, field);
+            result.singularities = findSingularities(optSurface, field);
             for (Singularity& s : result.singularities) s.position = frame.fromWork(s.position);
         });
     }
@@ -234,7 +266,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     std::vector<SampleConstraint> sampleRoles;
     pipeline.run("sampling", [&] {
         if (params.initialSamples.empty()) {
-            seeds = sampleSurface(surface, params.vertexCount, params.seed, rho);  // uniform when rho is empty
+            seeds = sampleSurface(optSurface, params.vertexCount, params.seed, rho);  // uniform when rho is empty
         } else {
             seeds.clear();
             for (const Vec3& x : params.initialSamples) seeds.push_back(frame.toWork(x));
@@ -248,14 +280,14 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     // would be lost in the RDT (nef2 at 100 000 vertices: 7): it starts again elsewhere.
     int reseedCalls = 0, reseededSamples = 0;
     auto reseedEmpty = [&] {
-        const int moved = reseedEmptyCells(energy, surface, seeds, params.seed + 7919u * ++reseedCalls);
+        const int moved = reseedEmptyCells(energy, optSurface, seeds, params.seed + 7919u * ++reseedCalls);
         reseededSamples += moved;
         return moved;
     };
     try {
         pipeline.run("lloyd", [&] {
             stage = "lloyd";
-            lloydRelaxation(energy, surface, seeds, params.lloydIterations, params.seed);
+            lloydRelaxation(energy, optSurface, seeds, params.lloydIterations, params.seed);
         });
         pipeline.run("cvt", [&] {
             stage = "cvt";
@@ -266,7 +298,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         // Second stage of §5: samples on the border and on feature lines, held there from now on.
         pipeline.run("features", [&] {
             stage = "features";
-            sampleRoles = relaxConstrainedSamples(energy, seeds, surface, border, features, params.boundaryIterations);
+            sampleRoles = relaxConstrainedSamples(energy, seeds, optSurface, border, features, params.boundaryIterations);
             std::vector<char> frozen(seeds.size(), 0);
             for (size_t i = 0; i < seeds.size(); ++i) frozen[i] = sampleRoles[i] != SampleConstraint::Free;
             energy.setFrozen(std::move(frozen));
@@ -310,8 +342,18 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         pipeline.run("valence", [&] {
             stage = "valence";
             pipeline.report(stage, 92);
-            const ValenceSurface on{surface, tree, features.segments, useField ? &field : nullptr};
+            const ValenceSurface on{optSurface, tree, features.segments, useField ? &field : nullptr};
             result.valence = optimizeValence(result.mesh, roles, on, params.valence);
+        });
+    }
+    if (simplified) {
+        // Back on the input surface: the coarse one is within SimplifyParams::maxError of it. Border
+        // and feature vertices lie on input edges, which both surfaces have.
+        pipeline.run("project", [&] {
+            const ClosestPointTree inputTree(surface);
+            std::vector<Vec3>& vertices = result.mesh.vertices;
+#pragma omp parallel for schedule(static)
+            for (int v = 0; v < static_cast<int>(vertices.size()); ++v) vertices[v] = inputTree.closest(vertices[v]).point;
         });
     }
     if (useField) {

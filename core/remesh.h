@@ -67,6 +67,13 @@ struct RemeshParams {
     //! that differ by at most 3 % (seed 1: torus 1000, fandisk 5000, bunny 5000 the same to
     //! 0.001 %, fertility 3000 0.842 against 0.867 %).
     int distanceSamples = 50000;
+    //! Optimise on a coarser copy of the input (simplify.h) with about this many faces per
+    //! sample when the input has more than 1.5 times that; 0 = always on the input itself, as
+    //! the paper does. The output's vertices are put back on the input surface and d_RMS / d_H
+    //! are measured against the input. Every RVD evaluation clips all triangles of the surface
+    //! it runs on, so this is what makes a dense scan cost about what a coarse model costs.
+    //! 4 by measurement (README: optimisation surface).
+    int optimisationFacesPerSample = 4;
     //! §4.4: after the RDT, flips / collapses / splits that lower Σ(d(v) − o(v))², then a
     //! relaxation on the fixed connectivity (valence.h).
     bool valenceOptimization = true;
@@ -121,6 +128,9 @@ struct RemeshResult {
     std::vector<Singularity> singularities;  //!< of the input's field, positions in input units
     ValenceStats valence;                    //!< V6% before / after valence optimisation, operations done
     RepairReport repair;                     //!< what the repair stage did (RemeshParams::repair)
+    //! Faces of the surface the optimisation ran on: the input's (after repair) or its coarser
+    //! copy's (RemeshParams::optimisationFacesPerSample).
+    int optimisationFaces = 0;
 };
 
 //! Remeshes `input` (validated first; throws InvalidInputError with a clear message).

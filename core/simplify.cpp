@@ -1,0 +1,297 @@
+#include "simplify.h"
+
+#include "errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <string>
+#include <utility>
+
+namespace fieldcvt {
+
+namespace {
+
+// Garland–Heckbert quadric Σ area · (n·x + d)² over a set of face planes, stored as the
+// symmetric 3×3 part, the linear part and the constant, plus the area it covers.
+struct Quadric {
+    double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+    Vec3 b = Vec3::Zero();
+    double c = 0;
+    double area = 0;
+
+    static Quadric plane(const Vec3& unitNormal, const Vec3& point, double area)
+    {
+        Quadric q;
+        const Vec3& n = unitNormal;
+        const double d = -n.dot(point);
+        q.xx = area * n.x() * n.x(), q.xy = area * n.x() * n.y(), q.xz = area * n.x() * n.z();
+        q.yy = area * n.y() * n.y(), q.yz = area * n.y() * n.z(), q.zz = area * n.z() * n.z();
+        q.b = area * d * n;
+        q.c = area * d * d;
+        q.area = area;
+        return q;
+    }
+    Quadric& operator+=(const Quadric& o)
+    {
+        xx += o.xx, xy += o.xy, xz += o.xz, yy += o.yy, yz += o.yz, zz += o.zz;
+        b += o.b, c += o.c, area += o.area;
+        return *this;
+    }
+    //! Σ area · distance² of p to the planes (>= 0 up to rounding).
+    double error(const Vec3& p) const
+    {
+        const double x = p.x(), y = p.y(), z = p.z();
+        const double e = xx * x * x + yy * y * y + zz * z * z + 2 * (xy * x * y + xz * x * z + yz * y * z) + 2 * b.dot(p) + c;
+        return std::max(0.0, e);
+    }
+};
+
+// Mean ratio 4√3 A / Σ|e|²: 1 for an equilateral triangle, 0 for a degenerate one.
+double meanRatio(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const double sum = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    if (!(sum > 0)) return 0;
+    return 2 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / sum;
+}
+
+//! A collapse that leaves a face this much worse than the worst face around the removed vertex,
+//! and worse than this, is refused (half-edge collapses on flat parts, where every quadric error
+//! is 0, would otherwise make long slivers).
+constexpr double kMinMeanRatio = 0.2;
+//! A moved face may turn by at most this much (cosine; 45°).
+constexpr double kMinNormalCosine = 0.7071;
+//! Weight of the squared edge length in the collapse order (times the area the quadrics cover,
+//! the units of the quadric error): on flat parts, where the error is 0, short edges go first
+//! and the coarse surface stays even.
+constexpr double kLengthWeight = 1e-3;
+
+struct Candidate {
+    double cost;
+    int from, to;
+    std::uint32_t fromVersion, toVersion;
+    // The smallest cost first; ties by indices (deterministic).
+    bool operator>(const Candidate& o) const
+    {
+        if (cost != o.cost) return cost > o.cost;
+        if (from != o.from) return from > o.from;
+        return to > o.to;
+    }
+};
+
+class Simplifier {
+public:
+    Simplifier(const TriMesh& input, const SimplifyParams& params) : params_(params), position_(input.vertices), faces_(input.faces)
+    {
+        const int n = input.vertexCount();
+        if (!params.locked.empty() && params.locked.size() != size_t(n))
+            throw InvalidInputError("simplify: the locked flags have " + std::to_string(params.locked.size()) + " entries for " +
+                                    std::to_string(n) + " vertices");
+        locked_.assign(n, 0);
+        for (int v = 0; v < n && !params.locked.empty(); ++v) locked_[v] = params.locked[v];
+        vertexFaces_.assign(n, {});
+        quadric_.assign(n, {});
+        faceAlive_.assign(faces_.size(), 1);
+        version_.assign(n, 0);
+        for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
+            const Face& t = faces_[f];
+            const Vec3 normal = (position_[t[1]] - position_[t[0]]).cross(position_[t[2]] - position_[t[0]]);
+            const double length = normal.norm();
+            if (length > 0) {
+                const Quadric q = Quadric::plane(normal / length, position_[t[0]], 0.5 * length);
+                for (int v : t) quadric_[v] += q;
+            }
+            for (int v : t) vertexFaces_[v].push_back(f);
+        }
+        // Vertices on a border edge (an edge of one face) stay.
+        std::vector<std::pair<std::pair<int, int>, int>> edges;
+        edges.reserve(3 * faces_.size());
+        for (const Face& t : faces_)
+            for (int e = 0; e < 3; ++e) edges.push_back({std::minmax(t[e], t[(e + 1) % 3]), 0});
+        std::sort(edges.begin(), edges.end());
+        for (size_t r = 0; r < edges.size();) {
+            size_t q = r;
+            while (q < edges.size() && edges[q].first == edges[r].first) ++q;
+            if (q - r != 2) locked_[edges[r].first.first] = locked_[edges[r].first.second] = 1;
+            r = q;
+        }
+        aliveFaces_ = static_cast<int>(faces_.size());
+    }
+
+    SimplifyResult run()
+    {
+        const int n = static_cast<int>(position_.size());
+        std::vector<int> ring;
+        for (int v = 0; v < n; ++v) {
+            neighbours(v, ring);
+            for (int w : ring)
+                if (v < w) pushEdge(v, w);
+        }
+        while (aliveFaces_ > params_.targetFaces && !heap_.empty()) {
+            const Candidate c = heap_.top();
+            heap_.pop();
+            if (!vertexAlive(c.from) || !vertexAlive(c.to) || version_[c.from] != c.fromVersion || version_[c.to] != c.toVersion)
+                continue;
+            if (!collapseAllowed(c.from, c.to)) continue;
+            collapse(c.from, c.to);
+            neighbours(c.to, ring);
+            for (int w : ring) pushEdge(c.to, w);
+        }
+        return compact();
+    }
+
+private:
+    bool vertexAlive(int v) const { return !vertexFaces_[v].empty(); }
+
+    void neighbours(int v, std::vector<int>& out) const
+    {
+        out.clear();
+        for (int f : vertexFaces_[v])
+            for (int w : faces_[f])
+                if (w != v) out.push_back(w);
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+
+    // Cost of removing `from` into `to` (infinite when not allowed by the lock or the error bound).
+    double cost(int from, int to) const
+    {
+        if (locked_[from]) return std::numeric_limits<double>::infinity();
+        Quadric q = quadric_[from];
+        q += quadric_[to];
+        const double error = q.error(position_[to]);
+        if (q.area > 0 && error > params_.maxError * params_.maxError * q.area) return std::numeric_limits<double>::infinity();
+        return error + kLengthWeight * q.area * (position_[from] - position_[to]).squaredNorm();
+    }
+
+    void pushEdge(int u, int w)
+    {
+        const double uw = cost(u, w), wu = cost(w, u);
+        const bool forward = uw < wu || (uw == wu && u < w);
+        const double best = forward ? uw : wu;
+        if (!std::isfinite(best)) return;
+        const int from = forward ? u : w, to = forward ? w : u;
+        heap_.push({best, from, to, version_[from], version_[to]});
+    }
+
+    bool collapseAllowed(int from, int to)
+    {
+        // The two faces of edge (from, to) and their opposite corners.
+        int shared = 0;
+        int opposite[2] = {-1, -1};
+        for (int f : vertexFaces_[from]) {
+            const Face& t = faces_[f];
+            if (t[0] != to && t[1] != to && t[2] != to) continue;
+            if (shared == 2) return false;
+            for (int v : t)
+                if (v != from && v != to) opposite[shared] = v;
+            ++shared;
+        }
+        if (shared != 2) return false;  // a border edge (its ends are locked anyway) or not an edge
+        // Link condition: the only common neighbours are the two opposite corners, else the
+        // collapse pinches the surface.
+        neighbours(from, ringFrom_);
+        neighbours(to, ringTo_);
+        int common = 0;
+        for (size_t i = 0, j = 0; i < ringFrom_.size() && j < ringTo_.size();) {
+            if (ringFrom_[i] < ringTo_[j]) ++i;
+            else if (ringFrom_[i] > ringTo_[j]) ++j;
+            else {
+                if (ringFrom_[i] != opposite[0] && ringFrom_[i] != opposite[1]) return false;
+                ++common, ++i, ++j;
+            }
+        }
+        if (common != 2) return false;
+        // The opposite corners lose a face: keep at least three around each (no fins).
+        for (int v : opposite)
+            if (vertexFaces_[v].size() < 4) return false;
+        // The moved faces: no flip, no sharp turn, no new sliver.
+        double worstBefore = 1;
+        for (int f : vertexFaces_[from]) {
+            const Face& t = faces_[f];
+            worstBefore = std::min(worstBefore, meanRatio(position_[t[0]], position_[t[1]], position_[t[2]]));
+        }
+        for (int f : vertexFaces_[from]) {
+            Face t = faces_[f];
+            if (t[0] == to || t[1] == to || t[2] == to) continue;
+            const Vec3 before = (position_[t[1]] - position_[t[0]]).cross(position_[t[2]] - position_[t[0]]);
+            for (int& v : t)
+                if (v == from) v = to;
+            const Vec3 after = (position_[t[1]] - position_[t[0]]).cross(position_[t[2]] - position_[t[0]]);
+            const double lengths = before.norm() * after.norm();
+            if (!(lengths > 0) || before.dot(after) < kMinNormalCosine * lengths) return false;
+            const double ratio = meanRatio(position_[t[0]], position_[t[1]], position_[t[2]]);
+            if (ratio < kMinMeanRatio && ratio < worstBefore) return false;
+        }
+        return true;
+    }
+
+    void collapse(int from, int to)
+    {
+        std::vector<int> faces;
+        faces.swap(vertexFaces_[from]);
+        for (int f : faces) {
+            Face& t = faces_[f];
+            if (t[0] == to || t[1] == to || t[2] == to) {
+                faceAlive_[f] = 0;
+                --aliveFaces_;
+                for (int v : t) {
+                    if (v == from) continue;
+                    auto& list = vertexFaces_[v];
+                    list.erase(std::find(list.begin(), list.end(), f));
+                }
+            } else {
+                for (int& v : t)
+                    if (v == from) v = to;
+                vertexFaces_[to].push_back(f);
+            }
+        }
+        quadric_[to] += quadric_[from];
+        ++version_[to];
+        ++version_[from];
+    }
+
+    SimplifyResult compact() const
+    {
+        SimplifyResult result;
+        const int n = static_cast<int>(position_.size());
+        result.coarseVertex.assign(n, -1);
+        for (int v = 0; v < n; ++v) {
+            if (!vertexAlive(v)) continue;
+            result.coarseVertex[v] = static_cast<int>(result.inputVertex.size());
+            result.inputVertex.push_back(v);
+            result.mesh.vertices.push_back(position_[v]);
+        }
+        for (size_t f = 0; f < faces_.size(); ++f) {
+            if (!faceAlive_[f]) continue;
+            const Face& t = faces_[f];
+            result.mesh.faces.push_back({result.coarseVertex[t[0]], result.coarseVertex[t[1]], result.coarseVertex[t[2]]});
+        }
+        return result;
+    }
+
+    const SimplifyParams& params_;
+    std::vector<Vec3> position_;
+    std::vector<Face> faces_;
+    std::vector<char> faceAlive_;
+    std::vector<char> locked_;
+    std::vector<std::vector<int>> vertexFaces_;
+    std::vector<Quadric> quadric_;
+    std::vector<std::uint32_t> version_;
+    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
+    std::vector<int> ringFrom_, ringTo_;
+    int aliveFaces_ = 0;
+};
+
+}  // namespace
+
+SimplifyResult simplifyMesh(const TriMesh& input, const SimplifyParams& params)
+{
+    if (params.targetFaces < 0) throw InvalidInputError("simplify: the target face count must be >= 0");
+    if (!(params.maxError >= 0)) throw InvalidInputError("simplify: the error bound must be >= 0");
+    return Simplifier(input, params).run();
+}
+
+}  // namespace fieldcvt

@@ -1,0 +1,152 @@
+// The optimisation surface (simplify.h): a coarser copy of the input made of input vertices,
+// manifold, with the input's border and locked vertices, close to the input.
+#include "simplify.h"
+
+#include "closest_point.h"
+#include "mesh_check.h"
+#include "mesh_io.h"
+#include "metrics.h"
+#include "remesh.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+using namespace fieldcvt;
+
+namespace {
+
+// Largest distance from the coarse mesh's face centroids and edge midpoints to `input`.
+double largestDeviation(const TriMesh& coarse, const TriMesh& input)
+{
+    const ClosestPointTree tree(input);
+    double worst = 0;
+    for (const Face& t : coarse.faces) {
+        const Vec3& a = coarse.vertices[t[0]];
+        const Vec3& b = coarse.vertices[t[1]];
+        const Vec3& c = coarse.vertices[t[2]];
+        for (const Vec3& p : {Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)), Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a))})
+            worst = std::max(worst, (tree.closest(p).point - p).norm());
+    }
+    return worst;
+}
+
+std::set<std::pair<int, int>> borderEdges(const TriMesh& mesh, const std::vector<int>& toInput)
+{
+    std::map<std::pair<int, int>, int> count;
+    for (const Face& t : mesh.faces)
+        for (int e = 0; e < 3; ++e) {
+            int a = t[e], b = t[(e + 1) % 3];
+            if (!toInput.empty()) a = toInput[a], b = toInput[b];
+            ++count[std::minmax(a, b)];
+        }
+    std::set<std::pair<int, int>> border;
+    for (const auto& [edge, n] : count)
+        if (n == 1) border.insert(edge);
+    return border;
+}
+
+}  // namespace
+
+TEST(Simplify, SphereReachesTheTargetStaysManifoldAndClose)
+{
+    const TriMesh sphere = testmesh::icosphere(5);  // 20 480 faces
+    SimplifyParams params;
+    params.targetFaces = 2000;
+    params.maxError = 0.01;
+    const SimplifyResult r = simplifyMesh(sphere, params);
+    EXPECT_LE(r.mesh.faceCount(), 2002);
+    EXPECT_GE(r.mesh.faceCount(), 1900);
+    const TopologySummary topology = computeTopology(r.mesh);
+    EXPECT_TRUE(topology.manifold());
+    EXPECT_EQ(topology.genus, 0);
+    EXPECT_EQ(topology.components, 1);
+    EXPECT_EQ(topology.boundaryLoops, 0);
+    // Half-edge collapses: every coarse vertex is an input vertex, at the same place.
+    ASSERT_EQ(r.inputVertex.size(), r.mesh.vertices.size());
+    for (size_t v = 0; v < r.inputVertex.size(); ++v) {
+        EXPECT_EQ(r.mesh.vertices[v], sphere.vertices[size_t(r.inputVertex[v])]);
+        EXPECT_EQ(r.coarseVertex[size_t(r.inputVertex[v])], int(v));
+    }
+    EXPECT_LT(largestDeviation(r.mesh, sphere), 0.01 * 1.5);
+    // No collapse makes a sliver: the input's triangles are all fine, so the coarse ones are.
+    const QualityMetrics q = computeQuality(r.mesh);
+    EXPECT_GT(q.qMin, 0.15);
+}
+
+TEST(Simplify, ErrorBoundStopsBeforeTheTarget)
+{
+    const TriMesh sphere = testmesh::icosphere(4);
+    SimplifyParams params;
+    params.targetFaces = 50;  // far below what the bound allows
+    params.maxError = 0.002;
+    const SimplifyResult r = simplifyMesh(sphere, params);
+    EXPECT_GT(r.mesh.faceCount(), 500);
+    EXPECT_LT(largestDeviation(r.mesh, sphere), 0.002 * 1.5);
+}
+
+TEST(Simplify, OpenBorderAndLockedVerticesStay)
+{
+    const TriMesh grid = testmesh::planeGrid(40);  // flat: every quadric error is 0
+    SimplifyParams params;
+    params.targetFaces = 700;
+    params.maxError = 0.01;
+    params.locked.assign(grid.vertices.size(), 0);
+    const int lockedVertex = 20 * 41 + 20;  // the centre of the grid
+    params.locked[lockedVertex] = 1;
+    const SimplifyResult r = simplifyMesh(grid, params);
+    EXPECT_LE(r.mesh.faceCount(), 702);
+    EXPECT_GE(r.coarseVertex[lockedVertex], 0);
+    // The border is made of the input's border edges, all of them.
+    EXPECT_EQ(borderEdges(r.mesh, r.inputVertex), borderEdges(grid, {}));
+    EXPECT_NEAR(surfaceArea(r.mesh), surfaceArea(grid), 1e-9);
+    const TopologySummary topology = computeTopology(r.mesh);
+    EXPECT_TRUE(topology.manifold());
+    EXPECT_EQ(topology.boundaryLoops, 1);
+    EXPECT_GT(computeQuality(r.mesh).qMin, 0.15);  // flat parts stay even (length term)
+}
+
+TEST(Simplify, DeterministicAndCheckedParameters)
+{
+    const TriMesh torus = testmesh::torus(60, 30);
+    SimplifyParams params;
+    params.targetFaces = 800;
+    params.maxError = 0.02;
+    const SimplifyResult a = simplifyMesh(torus, params), b = simplifyMesh(torus, params);
+    EXPECT_EQ(a.mesh.faces, b.mesh.faces);
+    EXPECT_EQ(a.inputVertex, b.inputVertex);
+    EXPECT_EQ(computeTopology(a.mesh).genus, 1);
+    params.locked.assign(3, 0);  // wrong size
+    EXPECT_THROW(simplifyMesh(torus, params), InvalidInputError);
+    params.locked.clear();
+    params.targetFaces = -1;
+    EXPECT_THROW(simplifyMesh(torus, params), InvalidInputError);
+}
+
+// remesh() on a dense input optimises on the coarse copy and puts the result back on the input:
+// every output vertex on the input surface, the same figures as on the input itself.
+TEST(Simplify, RemeshOfADenseInputMatchesTheFullSurfaceRun)
+{
+    const TriMesh dense = testmesh::torus(100, 50);  // 10 000 faces for 500 vertices
+    RemeshParams params;
+    params.vertexCount = 500;
+    params.threads = 2;
+    const RemeshResult coarse = remesh(dense, params);
+    ASSERT_GT(coarse.optimisationFaces, 0);
+    EXPECT_LE(coarse.optimisationFaces, params.optimisationFacesPerSample * params.vertexCount + 2);
+    params.optimisationFacesPerSample = 0;
+    const RemeshResult full = remesh(dense, params);
+    EXPECT_EQ(full.optimisationFaces, dense.faceCount());
+
+    const ClosestPointTree tree(dense);
+    const double diagonal = boundingBoxDiagonal(dense);
+    for (const Vec3& p : coarse.mesh.vertices) EXPECT_LT((tree.closest(p).point - p).norm(), 1e-9 * diagonal);
+    EXPECT_EQ(coarse.outputTopology.genus, 1);
+    EXPECT_TRUE(coarse.outputTopology.manifold());
+    EXPECT_GT(coarse.metrics.qAvg, full.metrics.qAvg - 0.01);
+    EXPECT_GT(coarse.metrics.v6Pct, full.metrics.v6Pct - 3);
+    EXPECT_GT(coarse.metrics.thetaMin, 30);
+    EXPECT_LT(coarse.metrics.dH, 1.2 * full.metrics.dH);
+}
