@@ -137,7 +137,12 @@ struct ClosestPointTree::Impl {
     //! Triangles copied in leaf order so that a leaf's triangles are contiguous in memory.
     struct Triangle {
         Vec3 a, b, c;
+        //! For planeFartherThan, computed once at build time with the same expressions it used
+        //! per query (so the same values): ab x ac, its squared norm, and the needle test.
+        Vec3 normal;
+        double normal2;
         int face;
+        bool wellShaped;
     };
 
     static constexpr int kLeafSize = 4;
@@ -171,12 +176,17 @@ struct ClosestPointTree::Impl {
     //! lowest-face rule. Needles are never rejected here.
     static bool planeFartherThan(const Vec3& p, const Triangle& t, double best2)
     {
-        const Vec3 ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;
+        if (!t.wellShaped) return false;
+        const Vec3 ap = p - t.a;
+        const double height = t.normal.dot(ap);
+        return height * height > 4.0 * t.normal2 * std::max(best2, 1e-22 * ap.squaredNorm());
+    }
+    static Triangle makeTriangle(const Vec3& a, const Vec3& b, const Vec3& c, int face)
+    {
+        const Vec3 ab = b - a, ac = c - a;
         const Vec3 normal = ab.cross(ac);
         const double normal2 = normal.squaredNorm();
-        if (!(normal2 > kNeedleSin2 * ab.squaredNorm() * ac.squaredNorm())) return false;
-        const double height = normal.dot(ap);
-        return height * height > 4.0 * normal2 * std::max(best2, 1e-22 * ap.squaredNorm());
+        return Triangle{a, b, c, normal, normal2, face, normal2 > kNeedleSin2 * ab.squaredNorm() * ac.squaredNorm()};
     }
 
     void build(const TriMesh& mesh);
@@ -230,7 +240,7 @@ void ClosestPointTree::Impl::build(const TriMesh& mesh)
     slotOfFace.resize(faceCount);
     for (int i = 0; i < faceCount; ++i) {
         const Face& t = mesh.faces[order[i]];
-        triangles[i] = Triangle{mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], order[i]};
+        triangles[i] = makeTriangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], order[i]);
         slotOfFace[order[i]] = i;
     }
 }

@@ -434,10 +434,25 @@ DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, i
     const long long total = meshCount + static_cast<long long>(referenceSamples.size());
     // Per-sample results, reduced sequentially below: the same sums for any thread count.
     std::vector<double> squaredDistances(total);
-#pragma omp parallel for schedule(dynamic, 4096)
-    for (long long i = 0; i < total; ++i)
-        squaredDistances[i] = i < meshCount ? referenceTree->closest(meshSamples[i]).squaredDistance
-                                            : meshTree->closest(referenceSamples[i - meshCount]).squaredDistance;
+    // The samples of each side follow a Morton order of the faces: consecutive ones are near
+    // each other, so the previous answer's face is a close hint (closest() gives the same
+    // answer with or without it).
+    constexpr long long kChunk = 4096;
+    const long long chunkCount = (total + kChunk - 1) / kChunk;
+#pragma omp parallel for schedule(dynamic, 1)
+    for (long long c = 0; c < chunkCount; ++c) {
+        int hint = -1;
+        bool hintOnMesh = false;
+        for (long long i = c * kChunk, end = std::min(total, (c + 1) * kChunk); i < end; ++i) {
+            const bool onReference = i < meshCount;  // a mesh sample queried on the reference
+            if (onReference == hintOnMesh) hint = -1;  // the hint is a face of the other mesh
+            hintOnMesh = !onReference;
+            const ClosestPoint cp = onReference ? referenceTree->closest(meshSamples[i], hint)
+                                                : meshTree->closest(referenceSamples[i - meshCount], hint);
+            squaredDistances[i] = cp.squaredDistance;
+            hint = cp.face;
+        }
+    }
 
     double sum = 0, maximum = 0;
     for (double d2 : squaredDistances) {

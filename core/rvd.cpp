@@ -390,46 +390,47 @@ struct RestrictedVoronoiDiagram::Impl {
         }
     }
 
-    // Clips `poly` by the bisector half-space of seeds i and j that contains x_i.
-    // Returns whether the polygon changed.
-    static bool clipByBisector(Polygon& poly, const Vec3& xi, const Vec3& xj, int j)
+    // Clips `in` by the bisector half-space of seeds i and j that contains x_i, into `out` when
+    // it changes. Returns 0 when `in` is unchanged (`out` untouched), 1 when clipped into `out`
+    // (`radius2` is then the maximum squared distance of out's vertices to x_i: the same values
+    // as maxSquaredDistance(out, xi), so the same maximum), 2 when nothing is left.
+    static int clipByBisector(const Polygon& in, Polygon& out, const Vec3& xi, const Vec3& xj, int j, double& radius2)
     {
         const Vec3 d = xj - xi;
         const double half = 0.5 * d.squaredNorm();
         double side[kMaxPolygonVertices];
         bool anyOutside = false, anyInside = false;
-        for (int k = 0; k < poly.size; ++k) {
-            side[k] = (poly.point[k] - xi).dot(d) - half;  // > 0: nearer to x_j
+        const int size = in.size;
+        for (int k = 0; k < size; ++k) {
+            side[k] = (in.point[k] - xi).dot(d) - half;  // > 0: nearer to x_j
             if (side[k] > 0) anyOutside = true; else anyInside = true;
         }
-        if (!anyOutside) return false;
-        if (!anyInside) {
-            poly.size = 0;
-            return true;
-        }
-        Polygon out;
-        for (int k = 0; k < poly.size; ++k) {
-            const int next = (k + 1) % poly.size;
+        if (!anyOutside) return 0;
+        if (!anyInside) return 2;
+        int count = 0;
+        double r2 = 0;
+        for (int k = 0; k < size; ++k) {
+            const int next = k + 1 == size ? 0 : k + 1;
             const bool inside = side[k] <= 0, nextInside = side[next] <= 0;
             if (inside) {
-                out.point[out.size] = poly.point[k];
-                out.label[out.size++] = poly.label[k];
+                out.point[count] = in.point[k];
+                out.label[count] = in.label[k];
+                r2 = std::max(r2, (out.point[count] - xi).squaredNorm());
+                ++count;
             }
             if (inside != nextInside) {
-                if (out.size + 1 >= kMaxPolygonVertices) throw Error("restricted Voronoi cell has too many vertices");
+                if (count + 1 >= kMaxPolygonVertices) throw Error("restricted Voronoi cell has too many vertices");
                 const double t = side[k] / (side[k] - side[next]);
-                out.point[out.size] = poly.point[k] + t * (poly.point[next] - poly.point[k]);
+                out.point[count] = in.point[k] + t * (in.point[next] - in.point[k]);
                 // Leaving the half-space: the new edge runs along the bisector of (i, j).
-                out.label[out.size++] = inside ? j : poly.label[k];
+                out.label[count] = inside ? j : in.label[k];
+                r2 = std::max(r2, (out.point[count] - xi).squaredNorm());
+                ++count;
             }
         }
-        // Copy only the used part (the arrays are large and mostly empty).
-        for (int k = 0; k < out.size; ++k) {
-            poly.point[k] = out.point[k];
-            poly.label[k] = out.label[k];
-        }
-        poly.size = out.size;
-        return true;
+        out.size = count;
+        radius2 = r2;
+        return 1;
     }
 
     static double maxSquaredDistance(const Polygon& poly, const Vec3& x)
@@ -441,30 +442,35 @@ struct RestrictedVoronoiDiagram::Impl {
 
     // Clips `poly` to the Voronoi cell of seed i. A neighbour farther than twice the polygon's
     // radius around x_i cannot cut it (security radius), so neighbours are visited nearest
-    // first until that holds.
-    void clipToCell(Polygon& poly, int i, Scratch& scratch, long long& clipped) const
+    // first until that holds. The clipped polygons alternate between `poly` and `spare` (no
+    // copy per clip); returns the one holding the result (size 0: empty).
+    const Polygon& clipToCell(Polygon& poly, Polygon& spare, int i, Scratch& scratch, long long& clipped) const
     {
         const Vec3& xi = (*seeds)[i];
         if (duplicate[i]) {
             poly.size = 0;
-            return;
+            return poly;
         }
+        Polygon* current = &poly;
+        Polygon* other = &spare;
         double radius2 = maxSquaredDistance(poly, xi);
         auto visit = [&](uint32_t j, double d2) {
             if (d2 > 4.0 * radius2) return false;  // security radius reached: done
             // Coincident seeds: the lowest index keeps the cell, the others are ignored.
             if (duplicate[j]) return true;
             ++clipped;
-            if (clipByBisector(poly, xi, (*seeds)[j], static_cast<int>(j))) {
-                if (poly.size == 0) return false;
-                radius2 = maxSquaredDistance(poly, xi);
+            const int status = clipByBisector(*current, *other, xi, (*seeds)[j], static_cast<int>(j), radius2);
+            if (status == 2) {
+                current->size = 0;
+                return false;
             }
+            if (status == 1) std::swap(current, other);
             return true;
         };
         const uint32_t* idx = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
         const double* d2 = neighbourDist2.data() + static_cast<size_t>(i) * storedNeighbours;
         for (int q = 0; q < storedNeighbours; ++q)
-            if (!visit(idx[q], d2[q])) return;
+            if (!visit(idx[q], d2[q])) return *current;
         // Rare: the stored neighbours did not reach the security radius. Ask the tree for more.
         const size_t n = seeds->size();
         for (size_t k = 4 * static_cast<size_t>(storedNeighbours) + 1;; k *= 4) {
@@ -479,9 +485,9 @@ struct RestrictedVoronoiDiagram::Impl {
                 if (static_cast<int>(j) == i || scratch.extraDist[q] < covered) continue;
                 if (scratch.extraDist[q] == covered && std::find(idx, idx + storedNeighbours, j) != idx + storedNeighbours)
                     continue;
-                if (!visit(j, scratch.extraDist[q])) return;
+                if (!visit(j, scratch.extraDist[q])) return *current;
             }
-            if (k == n) return;
+            if (k == n) return *current;
         }
     }
 
@@ -538,11 +544,11 @@ struct RestrictedVoronoiDiagram::Impl {
             }
             const int i = scratch.stack.back();
             scratch.stack.pop_back();
-            Polygon poly;
-            poly.size = 3;
-            poly.point[0] = a, poly.point[1] = b, poly.point[2] = c;
-            poly.label[0] = -1, poly.label[1] = -2, poly.label[2] = -3;
-            clipToCell(poly, i, scratch, out.clipped);
+            Polygon start, spare;
+            start.size = 3;
+            start.point[0] = a, start.point[1] = b, start.point[2] = c;
+            start.label[0] = -1, start.label[1] = -2, start.label[2] = -3;
+            const Polygon& poly = clipToCell(start, spare, i, scratch, out.clipped);
             if (poly.size < 3) continue;
             anyPiece = true;
 
