@@ -342,7 +342,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         pipeline.run("valence", [&] {
             stage = "valence";
             pipeline.report(stage, 92);
-            const ValenceSurface on{optSurface, tree, features.segments, useField ? &field : nullptr};
+            const ValenceSurface on{optSurface, tree, features.segments, useField ? &field : nullptr, border};
             result.valence = optimizeValence(result.mesh, roles, on, params.valence);
         });
     }

@@ -298,7 +298,11 @@ ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles
         }
     if (edgeCount > 0 && lengthSum > 0) edgeLength_ = lengthSum / edgeCount;
     for (int v = 0; v < n; ++v)
-        if (onBorder_[v] && role_[v] == VertexRole::Free) role_[v] = VertexRole::Boundary;
+        if (onBorder_[v] && role_[v] == VertexRole::Free) {
+            // Measured: camelhead 3000 (seed 1) had one such vertex 1.1 % of the diagonal inside.
+            if (!surface.border.empty()) pos_[v] = closestPointOnSegments(pos_[v], surface.border);
+            role_[v] = VertexRole::Boundary;
+        }
 
     closest_.resize(n);
     normal_.resize(n);

@@ -74,6 +74,10 @@ struct ValenceSurface {
     const ClosestPointTree& tree;        //!< closest points on `input`
     std::vector<Segment> features;       //!< sharp feature lines (Feature vertices stay on them)
     const DirectionField* field = nullptr;  //!< 6-RoSy field on `input` for the final relaxation (null: none)
+    //! The input's open border. A Free vertex that the mesh has on its border (a sample whose cell
+    //! reached the border during the FCVT iterations) is put on it before it becomes Boundary;
+    //! empty: left where it is.
+    std::vector<Segment> border;
 };
 
 //! Optimises `mesh` in place: vertices may be added and removed; the mesh stays edge- and

