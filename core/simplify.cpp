@@ -68,8 +68,17 @@ constexpr double kMinNormalCosine = 0.7071;
 //! and the coarse surface stays even.
 constexpr double kLengthWeight = 1e-3;
 
+//! The collapse order compares costs on a logarithmic grid of relative step 2^-20 (about 1e-6):
+//! on a symmetric or regular mesh many costs are equal but for rounding, and a copy of the model
+//! moved or scaled (a working frame computed in other units) must collapse in the same order.
+std::int64_t orderKey(double cost)
+{
+    if (!(cost > 0)) return std::numeric_limits<std::int64_t>::min();
+    return static_cast<std::int64_t>(std::floor(std::log2(cost) * 1048576.0));
+}
+
 struct Candidate {
-    double cost;
+    std::int64_t cost;  //!< orderKey of the cost
     int from, to;
     std::uint32_t fromVersion, toVersion;
     // The smallest cost first; ties by indices (deterministic).
@@ -173,7 +182,7 @@ private:
         const double best = forward ? uw : wu;
         if (!std::isfinite(best)) return;
         const int from = forward ? u : w, to = forward ? w : u;
-        heap_.push({best, from, to, version_[from], version_[to]});
+        heap_.push({orderKey(best), from, to, version_[from], version_[to]});
     }
 
     bool collapseAllowed(int from, int to)
@@ -223,7 +232,7 @@ private:
             const double lengths = before.norm() * after.norm();
             if (!(lengths > 0) || before.dot(after) < kMinNormalCosine * lengths) return false;
             const double ratio = meanRatio(position_[t[0]], position_[t[1]], position_[t[2]]);
-            if (ratio < kMinMeanRatio && ratio < worstBefore) return false;
+            if (ratio < kMinMeanRatio && ratio < worstBefore * (1 - 1e-6)) return false;  // margin: equal shapes of a regular mesh
         }
         return true;
     }

