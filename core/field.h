@@ -29,8 +29,9 @@ std::string fieldSourceName(FieldSource source);
 
 //! Which smoothness the extrinsic source's solver minimises (Jakob et al. 2015 offer both).
 enum class FieldSmoothness {
-    //! Intrinsic where the border constrains the field (alignToBorder on a mesh with a border),
-    //! extrinsic otherwise.
+    //! Intrinsic where the border constrains the field (alignToBorder on a mesh with a border)
+    //! and is long for the surface (at least 2·sqrt(area): an open tube, a disk), extrinsic
+    //! otherwise (closed meshes, a scan with small holes).
     Auto,
     //! Σ ||d_i' − d_j'||² in 3D (eq. 3): penalises the tangent planes' turning too, so on a
     //! cylinder it is zero only for a field along the axis, and a rim constraint (30° off that,

@@ -263,7 +263,7 @@ TEST(Valence, BorderWeightMovesTheDisksValenceDeficitInside)
     };
     const QualityMetrics flat = run(1), weighted = run(4);
     EXPECT_GT(weighted.boundaryV4Pct, flat.boundaryV4Pct + 5.0);
-    EXPECT_GE(weighted.boundaryV4Pct, 84.0);  // 85.9 % measured; 84.6 % since the field follows the border intrinsically
+    EXPECT_GE(weighted.boundaryV4Pct, 85.0);
     EXPECT_GT(weighted.v6Pct, flat.v6Pct - 1.0);
     EXPECT_GT(weighted.thetaMin, flat.thetaMin - 2.0);
 }
