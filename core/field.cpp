@@ -1,5 +1,4 @@
 #include "field.h"
-#include "boundary.h"
 
 #include "curvature.h"
 #include "errors.h"
@@ -35,11 +34,12 @@ void checkField(const TriMesh& mesh, const DirectionField& field)
 // Boundary edges and edges whose dihedral angle exceeds `sharpAngle` fix the direction of their
 // vertices to the compatible average of their tangents (Jakob et al. 2015 constrain the field to
 // boundaries and creases the same way).
-// `borderConstrained` (when given) tells whether a border edge constrains a vertex.
+// `constrainingBorderLength` (when given) gets the total length of the border edges that
+// constrain the field (0: no border constraint).
 FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& normals, double sharpAngle,
-                                 bool alignToBorder, bool* borderConstrained = nullptr)
+                                 bool alignToBorder, double* constrainingBorderLength = nullptr)
 {
-    if (borderConstrained) *borderConstrained = false;
+    if (constrainingBorderLength) *constrainingBorderLength = 0;
     const int n = mesh.vertexCount();
     const double cosSharp = sharpAngle > 0 ? std::cos(sharpAngle * kPi / 180.0) : -2.0;
     std::vector<Vec3> faceNormals(mesh.faces.size());
@@ -61,7 +61,7 @@ FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& n
         const Vec3 t = mesh.vertices[b] - mesh.vertices[a];
         const double len = t.norm();
         if (!(len > 0)) continue;
-        if (borderConstrained && edges.isBorder(e)) *borderConstrained = true;
+        if (constrainingBorderLength && edges.isBorder(e)) *constrainingBorderLength += len;
         tangents.emplace_back(a, t / len);
         tangents.emplace_back(b, t / len);
     }
@@ -158,13 +158,6 @@ namespace {
 //! FieldSmoothness::Auto's threshold on border length / sqrt(area).
 constexpr double kLongBorder = 2.0;
 
-double borderLength(const TriMesh& mesh)
-{
-    double length = 0;
-    for (const Segment& s : boundarySegments(mesh)) length += (s.second - s.first).norm();
-    return length;
-}
-
 }  // namespace
 
 DirectionField computeField(const TriMesh& mesh, const FieldParams& params, FieldReport* report)
@@ -173,9 +166,9 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params, Fiel
     std::vector<Vec3> normals = vertexNormals(mesh);
     switch (params.source) {
     case FieldSource::Extrinsic: {
-        bool borderConstrained = false;
+        double borderLength = 0;
         const FieldConstraints constraints =
-            edgeConstraints(mesh, normals, params.sharpAngle, params.alignToBorder, &borderConstrained);
+            edgeConstraints(mesh, normals, params.sharpAngle, params.alignToBorder, &borderLength);
         // A border constraint and the extrinsic energy disagree wherever the surface bends
         // along the border (a cylinder's rims: the extrinsic optimum inside is axis-aligned, 30°
         // off the rim direction mod 60°, and the field twists in between); the intrinsic energy
@@ -184,7 +177,7 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params, Fiel
         // area: the cylinder 2.2, mask 2.9), so that it decides the field. Short borders (the
         // bunny's holes 1.4, camelhead's neck 1.0) keep the extrinsic field, which measured
         // better there: bunny 5000 d_H 0.66 / 0.71 % (seeds 1, 2) against 0.85 / 0.77 %.
-        const bool longBorder = borderConstrained && borderLength(mesh) >= kLongBorder * std::sqrt(surfaceArea(mesh));
+        const bool longBorder = borderLength > 0 && borderLength >= kLongBorder * std::sqrt(surfaceArea(mesh));
         const bool intrinsic = params.smoothness == FieldSmoothness::Intrinsic ||
                                (params.smoothness == FieldSmoothness::Auto && longBorder);
         return solveWithConstraints(mesh, std::move(normals), constraints, params.seed, params.smoothingIterations, report,

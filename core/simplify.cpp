@@ -1,6 +1,7 @@
 #include "simplify.h"
 
 #include "errors.h"
+#include "mesh_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -114,18 +115,10 @@ public:
             }
             for (int v : t) vertexFaces_[v].push_back(f);
         }
-        // Vertices on a border edge (an edge of one face) stay.
-        std::vector<std::pair<std::pair<int, int>, int>> edges;
-        edges.reserve(3 * faces_.size());
-        for (const Face& t : faces_)
-            for (int e = 0; e < 3; ++e) edges.push_back({std::minmax(t[e], t[(e + 1) % 3]), 0});
-        std::sort(edges.begin(), edges.end());
-        for (size_t r = 0; r < edges.size();) {
-            size_t q = r;
-            while (q < edges.size() && edges[q].first == edges[r].first) ++q;
-            if (q - r != 2) locked_[edges[r].first.first] = locked_[edges[r].first.second] = 1;
-            r = q;
-        }
+        // Vertices on a border edge (or on an edge of more than two faces) stay.
+        const EdgeTable edges = buildEdgeTable(input);
+        for (int e = 0; e < edges.edgeCount(); ++e)
+            if (edges.faceCount(e) != 2) locked_[edges.ends[e][0]] = locked_[edges.ends[e][1]] = 1;
         aliveFaces_ = static_cast<int>(faces_.size());
     }
 

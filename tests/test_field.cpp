@@ -83,6 +83,17 @@ TriMesh cylinder(int around, int rows, double r, double height)
     return m;
 }
 
+//! The vertices' principal axes (columns, from the thinnest spread to the longest) and centroid.
+Eigen::Matrix3d principalAxes(const TriMesh& m, Vec3& centre)
+{
+    centre = Vec3::Zero();
+    for (const Vec3& p : m.vertices) centre += p;
+    centre /= m.vertexCount();
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const Vec3& p : m.vertices) cov += (p - centre) * (p - centre).transpose();
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors();
+}
+
 TriMesh loadResource(const std::string& name)
 {
     InputReport report;
@@ -349,12 +360,8 @@ TEST(Field, TorusResourceCurvatureFields)
     // The check: min curvature along the circles around the axis, max around the tube,
     // within 5° at 95 % of the vertices.
     const TriMesh m = loadResource("torus.obj");
-    Vec3 centre = Vec3::Zero();
-    for (const Vec3& p : m.vertices) centre += p;
-    centre /= m.vertexCount();
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : m.vertices) cov += (p - centre) * (p - centre).transpose();
-    const Vec3 axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);  // thinnest
+    Vec3 centre;
+    const Vec3 axis = principalAxes(m, centre).col(0);  // thinnest
     FieldParams params;
     params.source = FieldSource::CurvatureMin;
     const DirectionField fmin = computeField(m, params);
@@ -392,12 +399,8 @@ TEST(Field, CylinderResourceFieldWithBorderDoesNotTwist)
     // of the vertices. The axis is the vertices' most elongated principal axis (checked: the z
     // axis through the origin for this mesh).
     const TriMesh m = loadResource("cylinder.off");
-    Vec3 centre = Vec3::Zero();
-    for (const Vec3& p : m.vertices) centre += p;
-    centre /= m.vertexCount();
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : m.vertices) cov += (p - centre) * (p - centre).transpose();
-    const Vec3 axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(2);  // longest
+    Vec3 centre;
+    const Vec3 axis = principalAxes(m, centre).col(2);  // longest
     EXPECT_GT(std::abs(axis.z()), 1 - 1e-6);
     EXPECT_LT(centre.norm(), 1e-3);
     FieldReport report;
