@@ -103,6 +103,10 @@ struct TrackedObjective {
     }
 };
 
+// A restart segment that lowers E_tot by less than this fraction makes no progress
+// (fandisk 1251 crept by ~3e-8 per iteration).
+constexpr double kStallDecrease = 1e-6;
+
 }  // namespace
 
 OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, const LbfgsParams& params)
@@ -120,7 +124,11 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
     solverParams.epsilon_rel = 0;
     solverParams.past = params.relativeDecrease > 0 ? std::max(1, params.window) : 0;
     solverParams.delta = params.relativeDecrease;
-    solverParams.max_linesearch = 40;
+    // A line search that needs more than a few halvings sits at a jump of E_field (an RDT edge
+    // that appears or vanishes between two trial points): it then only creeps, at ~14
+    // evaluations per iteration (fandisk 1251: 497 evaluations instead of 165). It fails
+    // instead, and the restart below decides whether L-BFGS still makes progress.
+    solverParams.max_linesearch = 10;
 
     int failuresWithoutProgress = 0;
     while (stats.iterations < params.iterations) {
@@ -141,7 +149,7 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
             // Out of time: hand back the best point seen, then let the caller stop.
             if (objective.best.size() == x.size()) seeds = unflatten(objective.best);
             throw;
-        } catch (const std::exception& e) {
+        } catch (const std::exception&) {
             // Line search failed (non-smooth point of the RVD energy, or converged to round-off):
             // restart L-BFGS from the best point, which forgets the curvature pairs.
             ++stats.restarts;
@@ -150,9 +158,13 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
             stats.iterations += std::max(1, energy.evaluations() - evaluationsBefore);
             x = objective.best;
             stats.energies.push_back(objective.bestValue);
-            failuresWithoutProgress = objective.bestValue < before ? 0 : failuresWithoutProgress + 1;
+            // Progress: a relative decrease of E_tot of at least kStallDecrease since the last
+            // restart. Two restarts without it: L-BFGS has converged as far as the piecewise
+            // smooth energy lets it (a stall, not an error: no warning).
+            const bool progress = before - objective.bestValue >= kStallDecrease * std::abs(objective.bestValue);
+            failuresWithoutProgress = progress ? 0 : failuresWithoutProgress + 1;
             if (failuresWithoutProgress >= 2) {
-                stats.warnings.push_back(std::string("L-BFGS stopped early: ") + e.what());
+                stats.stalled = true;
                 break;
             }
         }

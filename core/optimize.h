@@ -26,6 +26,7 @@ struct LbfgsParams {
 struct OptimizeStats {
     int iterations = 0;           //!< L-BFGS iterations done
     int restarts = 0;             //!< line-search failures recovered by a restart
+    bool stalled = false;         //!< ended early: two restarts in a row without progress
     std::vector<double> energies; //!< E_tot after each restart segment's end, and at the end
     std::vector<std::string> warnings;
 };
@@ -42,7 +43,8 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
 int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed);
 
 //! L-BFGS on the energy, starting from and updating `seeds`. The best point seen is kept: a
-//! line-search failure restarts from it; a second failure without progress ends early.
+//! line-search failure restarts from it; two failures in a row without progress end it early
+//! (OptimizeStats::stalled).
 OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, const LbfgsParams& params);
 
 }  // namespace fieldcvt
