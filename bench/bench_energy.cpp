@@ -18,6 +18,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 using namespace fieldcvt;
@@ -56,6 +57,40 @@ void BM_EnergyEvaluationBunny5000(benchmark::State& state)
     state.counters["clipped_polygons"] = static_cast<double>(energy.lastDiagram().clippedPolygons);
 }
 BENCHMARK(BM_EnergyEvaluationBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same with seeds that move between evaluations, as in L-BFGS (each seed by 0.02 of the
+// working unit per step, back and forth over 10 steps): what the RVD's neighbour lists see.
+void BM_EnergyEvaluationMovingSeedsBunny5000(benchmark::State& state)
+{
+    const BunnySetup& setup = bunny5000();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    EnergyFunction energy(setup.surface);
+    std::vector<Vec3> step(setup.seeds.size());
+    std::uint64_t h = 88172645463325252ULL;
+    for (Vec3& d : step) {
+        for (int c = 0; c < 3; ++c) {
+            h ^= h << 13, h ^= h >> 7, h ^= h << 17;
+            d[c] = double(h % 2001) / 1000.0 - 1.0;
+        }
+        d = 0.02 * d.normalized();
+    }
+    std::vector<Eigen::VectorXd> path;
+    for (int k = 0; k < 20; ++k) {
+        std::vector<Vec3> seeds = setup.seeds;
+        const int along = k < 10 ? k : 20 - k;
+        for (size_t i = 0; i < seeds.size(); ++i) seeds[i] += along * step[i];
+        path.push_back(flatten(seeds));
+    }
+    Eigen::VectorXd gradient;
+    size_t k = 0;
+    long long fromCandidates = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(energy.evaluate(path[k++ % path.size()], gradient).total);
+        fromCandidates += energy.lastDiagram().listsFromCandidates;
+    }
+    state.counters["lists_from_candidates"] = double(fromCandidates) / double(k * setup.seeds.size());
+}
+BENCHMARK(BM_EnergyEvaluationMovingSeedsBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The RVD with its edges (the weights of E_field), as every FCVT evaluation needs it.
 void BM_RvdWithEdgesBunny5000(benchmark::State& state)

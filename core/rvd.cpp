@@ -113,6 +113,7 @@ struct Polygon {
 
 constexpr int kTrianglesPerChunk = 256;  // fixed, so results do not depend on the thread count
 constexpr int kStoredNeighbours = 12;    // per seed: covers the security radius almost always (measured: 12 ~ 20, faster)
+constexpr int kCandidates = 36;          // per seed in the candidate lists (twice the stored neighbours)
 
 // Integrals over the part of one cell in consecutive triangles of a chunk.
 struct CellPiece {
@@ -217,6 +218,20 @@ struct RestrictedVoronoiDiagram::Impl {
     std::vector<RvdEdge> edgeBuffer;
     int storedNeighbours = 0;
 
+    // Candidate lists (Verlet lists of molecular dynamics): per seed its kCandidates nearest
+    // seeds at the positions `candidatePosition` they were found at, and the squared distance
+    // of the last one. Every seed nearer than that at the time is in the list, and a seed
+    // moves by at most `drift` since then, so while the k-th nearest candidate is nearer now
+    // than (radius - 2 drift), the nearest candidates are the nearest seeds: the
+    // neighbour lists come from a sort of a few distances instead of a k-d tree search. L-BFGS
+    // steps move the seeds little, so the lists serve many evaluations.
+    std::vector<Vec3> candidatePosition;
+    std::vector<uint32_t> candidateIndex;  // n * candidateCount
+    std::vector<double> candidateRadius;   // per seed: distance of its last candidate when found
+    double candidateMargin = 0;            // median of (candidate radius - stored radius) at the build
+    int candidateCount = 0;
+    bool rebuildCandidates = true;
+
     void buildPieces(RvdResult& result) const;
 
     Impl(const TriMesh& s, const std::vector<double>& faceDensity)
@@ -273,7 +288,8 @@ struct RestrictedVoronoiDiagram::Impl {
         }
     }
 
-    void buildNeighbourLists()
+    // Returns how many lists came from the candidate lists.
+    int buildNeighbourLists()
     {
         const int n = static_cast<int>(seeds->size());
         cloud.points = seeds;
@@ -288,44 +304,103 @@ struct RestrictedVoronoiDiagram::Impl {
         neighbourDist2.resize(neighbourIndex.size());
         if (!previous) listDistinct.assign(n, 0);
         duplicate.assign(n, 0);
-        const int k = storedNeighbours + 1;
-#pragma omp parallel
+
+        // How far the seeds moved since the candidate lists were found.
+        const int candidates0 = std::min(kCandidates, n - 1);
+        bool useCandidates = !rebuildCandidates && candidates0 == candidateCount && candidatePosition.size() == size_t(n) &&
+                             storedNeighbours > 0;
+        double drift = 0;
+        if (useCandidates) {
+#pragma omp parallel for schedule(static) reduction(max : drift)
+            for (int i = 0; i < n; ++i) drift = std::max(drift, ((*seeds)[i] - candidatePosition[i]).squaredNorm());
+            drift = std::sqrt(drift);
+            // Most lists would fail their test: find new ones now.
+            useCandidates = 3 * drift < candidateMargin;
+        }
+        const bool buildCandidates = !useCandidates && candidates0 > storedNeighbours;
+        if (buildCandidates) {
+            candidateCount = candidates0;
+            candidatePosition = *seeds;
+            candidateIndex.resize(static_cast<size_t>(n) * candidateCount);
+            candidateRadius.resize(n);
+            drift = 0;
+        }
+        long long failed = 0;
+        std::vector<double> margins(buildCandidates ? n : 0, 0.0);
+        const int k = (buildCandidates ? candidateCount : storedNeighbours) + 1;
+#pragma omp parallel reduction(+ : failed)
         {
             std::vector<uint32_t> idx(k);
             std::vector<double> d2(k);
+            std::vector<std::pair<double, uint32_t>> sorted(candidateCount);
 #pragma omp for schedule(static)
             for (int i = 0; i < n; ++i) {
                 const Vec3& xi = (*seeds)[i];
+                uint32_t* listIndex = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
+                double* listDist2 = neighbourDist2.data() + static_cast<size_t>(i) * storedNeighbours;
+                if (useCandidates) {
+                    const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
+                    for (int q = 0; q < candidateCount; ++q) sorted[q] = {((*seeds)[cand[q]] - xi).squaredNorm(), cand[q]};
+                    std::partial_sort(sorted.begin(), sorted.begin() + storedNeighbours, sorted.end());
+                    // Complete up to (radius - 2 drift); a rounding margin keeps the test strict.
+                    const double complete = candidateRadius[i] - drift - (xi - candidatePosition[i]).norm();
+                    const double last = sorted[storedNeighbours - 1].first;
+                    if (complete > 0 && last < complete * complete * (1 - 1e-9) && sorted[0].first > 0) {
+                        for (int q = 0; q < storedNeighbours; ++q) listIndex[q] = sorted[q].second, listDist2[q] = sorted[q].first;
+                        listDistinct[i] = 1;
+                        continue;
+                    }
+                    ++failed;  // moved too far, or a coincident seed: the k-d tree as before
+                }
                 double bound = std::numeric_limits<double>::max();
-                if (listDistinct[i]) {
+                if (listDistinct[i] && !buildCandidates) {
                     double r2 = 0;
-                    const uint32_t* old = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
-                    for (int q = 0; q < storedNeighbours; ++q) r2 = std::max(r2, ((*seeds)[old[q]] - xi).squaredNorm());
+                    for (int q = 0; q < storedNeighbours; ++q) r2 = std::max(r2, ((*seeds)[listIndex[q]] - xi).squaredNorm());
                     bound = r2 * (1 + 1e-9) + std::numeric_limits<double>::min();  // rounding margin
                 }
-                BoundedKnnResult knn(k, idx.data(), d2.data(), bound);
+                const int want = buildCandidates ? k : storedNeighbours + 1;
+                BoundedKnnResult knn(want, idx.data(), d2.data(), bound);
                 tree->findNeighbors(knn, xi.data(), KnnSearchParams());
                 size_t found = knn.size();
-                if (found < static_cast<size_t>(std::min(k, n))) {  // cannot happen with a true bound; be safe
-                    found = tree->knnSearch(xi.data(), k, idx.data(), d2.data());
+                if (found < static_cast<size_t>(std::min(want, n))) {  // cannot happen with a true bound; be safe
+                    found = tree->knnSearch(xi.data(), want, idx.data(), d2.data());
                 }
-                listDistinct[i] = found == static_cast<size_t>(k);
+                if (buildCandidates) {
+                    // The candidates: the seeds found, self excluded (a coincident seed stays in;
+                    // its zero distance sends this seed to the k-d tree in later evaluations).
+                    uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
+                    int c = 0;
+                    for (size_t q = 0; q < found && c < candidateCount; ++q)
+                        if (static_cast<int>(idx[q]) != i) cand[c++] = idx[q];
+                    for (; c < candidateCount; ++c) cand[c] = idx[found - 1];
+                    candidateRadius[i] = found == static_cast<size_t>(k) ? std::sqrt(d2[found - 1]) : 0.0;
+                }
+                listDistinct[i] = found >= static_cast<size_t>(storedNeighbours + 1);
                 int stored = 0;
                 for (size_t q = 0; q < found && stored < storedNeighbours; ++q) {
                     if (static_cast<int>(idx[q]) == i) continue;
                     if (d2[q] == 0.0 && static_cast<int>(idx[q]) < i) duplicate[i] = 1;
-                    neighbourIndex[static_cast<size_t>(i) * storedNeighbours + stored] = idx[q];
-                    neighbourDist2[static_cast<size_t>(i) * storedNeighbours + stored] = d2[q];
+                    listIndex[stored] = idx[q];
+                    listDist2[stored] = d2[q];
                     ++stored;
                 }
                 // The seed itself was not among the k nearest (many coincident seeds): fill up.
                 if (stored < storedNeighbours) listDistinct[i] = 0;
+                const size_t lastFound = std::min(found, static_cast<size_t>(storedNeighbours + 1)) - 1;
                 for (; stored < storedNeighbours; ++stored) {
-                    neighbourIndex[static_cast<size_t>(i) * storedNeighbours + stored] = idx[found - 1];
-                    neighbourDist2[static_cast<size_t>(i) * storedNeighbours + stored] = d2[found - 1];
+                    listIndex[stored] = idx[lastFound];
+                    listDist2[stored] = d2[lastFound];
                 }
+                if (buildCandidates) margins[i] = candidateRadius[i] - std::sqrt(listDist2[storedNeighbours - 1]);
             }
         }
+        if (buildCandidates) {
+            std::nth_element(margins.begin(), margins.begin() + n / 2, margins.end());
+            candidateMargin = margins[n / 2];
+        }
+        // Many lists failed their test: find new candidates at the next evaluation.
+        rebuildCandidates = !buildCandidates && (!useCandidates || 64 * failed > n);
+        return useCandidates ? n - static_cast<int>(failed) : 0;
     }
 
     // The seed whose Voronoi cell contains point p, certified: a greedy walk over the neighbour
@@ -671,7 +746,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
     if (seeds.empty()) throw InvalidInputError("restricted Voronoi diagram needs at least one seed");
     Impl& m = *impl_;
     m.seeds = &seeds;
-    m.buildNeighbourLists();
+    const int fromCandidates = m.buildNeighbourLists();
     m.computeVertexSeeds();
 
     const int faceCount = static_cast<int>(m.faces.size());
@@ -699,6 +774,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
     result.edges.clear();
     result.triangles.clear();
     result.clippedPolygons = 0;
+    result.listsFromCandidates = fromCandidates;
     for (const ChunkOutput& out : m.chunks) {
         for (const CellPiece& p : out.pieces) {
             result.mass[p.seed] += p.mass;

@@ -56,6 +56,9 @@ struct RvdResult {
     std::vector<std::array<int, 3>> pieceTriangles;
     //! Number of (triangle, cell) polygons clipped; a cost figure for benchmarks.
     long long clippedPolygons = 0;
+    //! Seeds whose nearest-neighbour list came from the candidate lists of an earlier call (no
+    //! k-d tree search); a cost figure for benchmarks and tests.
+    int listsFromCandidates = 0;
 
     double totalEnergy() const;
 };

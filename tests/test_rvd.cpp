@@ -155,3 +155,38 @@ TEST(Rvd, WarmStartedNeighbourSearchGivesTheSameDiagram)
     ASSERT_EQ(a.edges.size(), b.edges.size());
     for (size_t e = 0; e < a.edges.size(); ++e) EXPECT_EQ(a.edges[e].length, b.edges[e].length);
 }
+
+TEST(Rvd, NeighbourListsFromCandidatesGiveTheSameDiagram)
+{
+    // compute() takes most neighbour lists from the candidate lists of an earlier call while the
+    // seeds move little (L-BFGS steps). Along a path of small steps, with one seed jumping far
+    // and one landing on another, every diagram must equal a fresh object's, bit for bit.
+    const TriMesh surface = testmesh::torus(60, 30);
+    const std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 400, 8);
+    RvdOptions options;
+    options.edges = options.triangles = true;
+    RestrictedVoronoiDiagram warm(surface);
+    int fromCandidates = 0;
+    std::vector<Vec3> current = seeds;
+    for (int step = 0; step < 12; ++step) {
+        for (size_t i = 0; i < current.size(); ++i)
+            current[i] += 0.01 * Vec3(std::sin(1.0 * i + step), std::cos(3.0 * i - step), std::sin(7.0 * i * step));
+        if (step == 5) current[17] = current[200] + Vec3(0.5, 0, 0);  // a far jump
+        if (step == 8) current[33] = current[34];                      // coincident seeds
+        RvdResult a, b;
+        warm.compute(current, options, a);
+        RestrictedVoronoiDiagram fresh(surface);
+        fresh.compute(current, options, b);
+        fromCandidates += a.listsFromCandidates;
+        EXPECT_EQ(b.listsFromCandidates, 0);
+        EXPECT_EQ(a.mass, b.mass) << "step " << step;
+        EXPECT_EQ(a.moment, b.moment) << "step " << step;
+        EXPECT_EQ(a.energy, b.energy) << "step " << step;
+        EXPECT_EQ(a.triangles, b.triangles) << "step " << step;
+        EXPECT_EQ(a.pieceTriangles, b.pieceTriangles) << "step " << step;
+        ASSERT_EQ(a.edges.size(), b.edges.size());
+        for (size_t e = 0; e < a.edges.size(); ++e) EXPECT_EQ(a.edges[e].length, b.edges[e].length);
+    }
+    // The path exercises the candidate lists (most seeds, most steps), not only the k-d tree.
+    EXPECT_GT(fromCandidates, 6 * 400);
+}
