@@ -318,6 +318,9 @@ struct RestrictedVoronoiDiagram::Impl {
             useCandidates = 3 * drift < candidateMargin;
         }
         const bool buildCandidates = !useCandidates && candidates0 > storedNeighbours;
+        // The previous candidate lists (distinct seeds) bound the new ones' radius, as above.
+        const bool previousCandidates = buildCandidates && candidates0 == candidateCount &&
+                                        candidateIndex.size() == static_cast<size_t>(n) * candidateCount;
         if (buildCandidates) {
             candidateCount = candidates0;
             candidatePosition = *seeds;
@@ -339,10 +342,18 @@ struct RestrictedVoronoiDiagram::Impl {
                 uint32_t* listIndex = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
                 double* listDist2 = neighbourDist2.data() + static_cast<size_t>(i) * storedNeighbours;
                 if (useCandidates) {
-                    const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
-                    for (int q = 0; q < candidateCount; ++q) sorted[q] = {((*seeds)[cand[q]] - xi).squaredNorm(), cand[q]};
-                    std::partial_sort(sorted.begin(), sorted.begin() + storedNeighbours, sorted.end());
-                    // Complete up to (radius - 2 drift); a rounding margin keeps the test strict.
+                    // Sorted by (distance, index); the list is kept in the last call's order, so
+                    // it is nearly sorted and an insertion sort does little work.
+                    uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
+                    for (int q = 0; q < candidateCount; ++q) {
+                        const std::pair<double, uint32_t> entry{((*seeds)[cand[q]] - xi).squaredNorm(), cand[q]};
+                        int r = q;
+                        for (; r > 0 && entry < sorted[r - 1]; --r) sorted[r] = sorted[r - 1];
+                        sorted[r] = entry;
+                    }
+                    for (int q = 0; q < candidateCount; ++q) cand[q] = sorted[q].second;
+                    // Complete up to the candidate radius less this seed's move and the largest
+                    // move of any other; a rounding margin keeps the test strict.
                     const double complete = candidateRadius[i] - drift - (xi - candidatePosition[i]).norm();
                     const double last = sorted[storedNeighbours - 1].first;
                     if (complete > 0 && last < complete * complete * (1 - 1e-9) && sorted[0].first > 0) {
@@ -357,6 +368,11 @@ struct RestrictedVoronoiDiagram::Impl {
                     double r2 = 0;
                     for (int q = 0; q < storedNeighbours; ++q) r2 = std::max(r2, ((*seeds)[listIndex[q]] - xi).squaredNorm());
                     bound = r2 * (1 + 1e-9) + std::numeric_limits<double>::min();  // rounding margin
+                } else if (previousCandidates) {
+                    const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
+                    double r2 = 0;
+                    for (int q = 0; q < candidateCount; ++q) r2 = std::max(r2, ((*seeds)[cand[q]] - xi).squaredNorm());
+                    bound = r2 * (1 + 1e-9) + std::numeric_limits<double>::min();
                 }
                 const int want = buildCandidates ? k : storedNeighbours + 1;
                 BoundedKnnResult knn(want, idx.data(), d2.data(), bound);
