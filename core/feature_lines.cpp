@@ -341,30 +341,28 @@ double featureDeviation(const FeatureLines& features, const TriMesh& mesh, doubl
     PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
     tree.buildIndex();
     double worst = 0;
+    std::vector<uint32_t> index;
+    std::vector<double> d2;
     for (const Segment& s : features.segments) {
         const double length = (s.second - s.first).norm();
         const int n = std::max(1, static_cast<int>(std::ceil(length / spacing)));
         for (int k = 0; k <= n; ++k) {
             const Vec3 p = s.first + double(k) / n * (s.second - s.first);
-            // Any edge within reach has its midpoint within (best distance + half the longest edge).
-            constexpr size_t kNear = 8;
-            uint32_t index[kNear];
-            double d2[kNear];
-            const size_t found = tree.knnSearch(p.data(), std::min(kNear, mids.size()), index, d2);
+            // Any edge within reach has its midpoint within (best distance + half the longest
+            // edge): the nearest midpoints, more of them until the farthest one is beyond that
+            // (one long edge makes the reach long; all edges was the old fallback).
             double best = std::numeric_limits<double>::infinity();
-            for (size_t j = 0; j < found; ++j) {
-                double dist2 = 0;
-                closestPointOnSegment(p, edges[index[j]], &dist2);
-                best = std::min(best, dist2);
-            }
-            // Guard the kd shortcut: if the 8th midpoint is still close enough to hide a nearer
-            // edge, fall back to all edges.
-            if (found == kNear && std::sqrt(d2[found - 1]) < std::sqrt(best) + 0.5 * longest) {
-                for (const Segment& edge : edges) {
+            for (size_t want = 8;; want *= 4) {
+                want = std::min(want, mids.size());
+                index.resize(want);
+                d2.resize(want);
+                const size_t found = tree.knnSearch(p.data(), want, index.data(), d2.data());
+                for (size_t j = 0; j < found; ++j) {
                     double dist2 = 0;
-                    closestPointOnSegment(p, edge, &dist2);
+                    closestPointOnSegment(p, edges[index[j]], &dist2);
                     best = std::min(best, dist2);
                 }
+                if (found < want || want == mids.size() || std::sqrt(d2[found - 1]) >= std::sqrt(best) + 0.5 * longest) break;
             }
             worst = std::max(worst, std::sqrt(best));
         }
