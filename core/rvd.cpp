@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <string>
 
 namespace fieldcvt {
@@ -208,7 +209,15 @@ struct RestrictedVoronoiDiagram::Impl {
     // Per evaluation.
     const std::vector<Vec3>* seeds = nullptr;
     SeedCloud cloud;
-    std::unique_ptr<SeedTree> tree;
+    // The k-d tree of the seeds, built on first use in an evaluation: with the candidate lists
+    // most evaluations need it only for rare fallbacks (0.8 ms of ~15 for bunny 5000).
+    mutable std::unique_ptr<SeedTree> tree;
+    mutable std::unique_ptr<std::once_flag> treeBuilt;
+    const SeedTree& seedTree() const
+    {
+        std::call_once(*treeBuilt, [this] { tree = std::make_unique<SeedTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)); });
+        return *tree;
+    }
     std::vector<uint32_t> neighbourIndex;  // n * kStoredNeighbours, nearest first, self excluded
     std::vector<double> neighbourDist2;
     std::vector<char> duplicate;  // seed coincides with a lower-index seed: empty cell, no bisector
@@ -293,7 +302,8 @@ struct RestrictedVoronoiDiagram::Impl {
     {
         const int n = static_cast<int>(seeds->size());
         cloud.points = seeds;
-        tree = std::make_unique<SeedTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+        tree.reset();
+        treeBuilt = std::make_unique<std::once_flag>();
         const int stored0 = std::min(kStoredNeighbours, n - 1);
         // The previous evaluation's lists (seeds move little between evaluations) bound the
         // k-th neighbour distance: the seed and its previous neighbours are k seeds.
@@ -376,10 +386,10 @@ struct RestrictedVoronoiDiagram::Impl {
                 }
                 const int want = buildCandidates ? k : storedNeighbours + 1;
                 BoundedKnnResult knn(want, idx.data(), d2.data(), bound);
-                tree->findNeighbors(knn, xi.data(), KnnSearchParams());
+                seedTree().findNeighbors(knn, xi.data(), KnnSearchParams());
                 size_t found = knn.size();
                 if (found < static_cast<size_t>(std::min(want, n))) {  // cannot happen with a true bound; be safe
-                    found = tree->knnSearch(xi.data(), want, idx.data(), d2.data());
+                    found = seedTree().knnSearch(xi.data(), want, idx.data(), d2.data());
                 }
                 if (buildCandidates) {
                     // The candidates: the seeds found, self excluded (a coincident seed stays in;
@@ -456,7 +466,7 @@ struct RestrictedVoronoiDiagram::Impl {
         }
         uint32_t idx[2];
         double d2[2];
-        const size_t found = tree->knnSearch(p.data(), 2, idx, d2);
+        const size_t found = seedTree().knnSearch(p.data(), 2, idx, d2);
         // Ties and coincident seeds go the clipping way, which resolves them.
         if ((found >= 2 && d2[1] == d2[0]) || duplicate[idx[0]]) return -1;
         return static_cast<int>(idx[0]);
@@ -568,7 +578,7 @@ struct RestrictedVoronoiDiagram::Impl {
             k = std::min(k, n);
             scratch.extraIndex.resize(k);
             scratch.extraDist.resize(k);
-            const size_t found = tree->knnSearch(xi.data(), k, scratch.extraIndex.data(), scratch.extraDist.data());
+            const size_t found = seedTree().knnSearch(xi.data(), k, scratch.extraIndex.data(), scratch.extraDist.data());
             // Skip what the stored list covered: everything up to its last distance.
             const double covered = storedNeighbours > 0 ? d2[storedNeighbours - 1] : -1.0;
             for (size_t q = 0; q < found; ++q) {
@@ -624,7 +634,7 @@ struct RestrictedVoronoiDiagram::Impl {
                 if (anyPiece) break;
                 if (nextCandidate >= candidates) {
                     if (treeQueried) break;
-                    candidates = static_cast<int>(tree->knnSearch(centroid.data(), kStartCandidates, candidate, candidateDist2));
+                    candidates = static_cast<int>(seedTree().knnSearch(centroid.data(), kStartCandidates, candidate, candidateDist2));
                     nextCandidate = 0;
                     treeQueried = true;
                 }
