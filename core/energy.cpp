@@ -55,21 +55,32 @@ double directionDistance(const Vec3& e, const Vec3& n, const Vec3& d, Vec3* grad
 double fieldEnergy(const std::vector<Vec3>& seeds, const std::vector<RvdEdge>& edges, const FieldFrames& frames,
                    Eigen::VectorXd* gradient)
 {
-    double energy = 0;
-    Vec3 gi, gj;
-    // Sequential over the sorted edge list: deterministic sums, and cheap next to the RVD.
-    for (const RvdEdge& edge : edges) {
+    // The terms in parallel (two directionDistance per edge: most of the cost), then summed
+    // sequentially in edge order: the same sums whatever the thread count.
+    const long long count = static_cast<long long>(edges.size());
+    std::vector<double> terms(edges.size(), 0.0);
+    std::vector<Vec3> termGradients(gradient ? edges.size() : 0);
+#pragma omp parallel for schedule(static)
+    for (long long k = 0; k < count; ++k) {
+        const RvdEdge& edge = edges[size_t(k)];
         if (!(edge.length > 0)) continue;
         const Vec3 e = seeds[edge.j] - seeds[edge.i];
         // Both directions of the edge, each measured in the frame at its origin (appendix).
+        Vec3 gi, gj;
         const double dij = directionDistance(e, frames.normals[edge.i], frames.directions[edge.i], gradient ? &gi : nullptr);
         const double dji = directionDistance(-e, frames.normals[edge.j], frames.directions[edge.j], gradient ? &gj : nullptr);
-        energy += edge.length * (dij + dji);
+        terms[size_t(k)] = edge.length * (dij + dji);
+        // e_ij = x_j − x_i: ∂D_ij/∂x_i = −∂D/∂e, ∂D_ij/∂x_j = +∂D/∂e; e_ji the other way.
+        if (gradient) termGradients[size_t(k)] = edge.length * (gj - gi);
+    }
+    double energy = 0;
+    for (long long k = 0; k < count; ++k) {
+        const RvdEdge& edge = edges[size_t(k)];
+        if (!(edge.length > 0)) continue;
+        energy += terms[size_t(k)];
         if (gradient) {
-            // e_ij = x_j − x_i: ∂D_ij/∂x_i = −∂D/∂e, ∂D_ij/∂x_j = +∂D/∂e; e_ji the other way.
-            const Vec3 gx = edge.length * (gj - gi);
-            gradient->segment<3>(3 * edge.i) += gx;
-            gradient->segment<3>(3 * edge.j) -= gx;
+            gradient->segment<3>(3 * edge.i) += termGradients[size_t(k)];
+            gradient->segment<3>(3 * edge.j) -= termGradients[size_t(k)];
         }
     }
     return energy;
