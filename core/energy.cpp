@@ -59,7 +59,7 @@ double fieldEnergy(const std::vector<Vec3>& seeds, const std::vector<RvdEdge>& e
     // sequentially in edge order: the same sums whatever the thread count.
     const long long count = static_cast<long long>(edges.size());
     std::vector<double> terms(edges.size(), 0.0);
-    std::vector<Vec3> termGradients(gradient ? edges.size() : 0);
+    std::vector<Vec3> termGradients(gradient ? edges.size() : 0, Vec3::Zero());
 #pragma omp parallel for schedule(static)
     for (long long k = 0; k < count; ++k) {
         const RvdEdge& edge = edges[size_t(k)];
@@ -73,10 +73,9 @@ double fieldEnergy(const std::vector<Vec3>& seeds, const std::vector<RvdEdge>& e
         // e_ij = x_j − x_i: ∂D_ij/∂x_i = −∂D/∂e, ∂D_ij/∂x_j = +∂D/∂e; e_ji the other way.
         if (gradient) termGradients[size_t(k)] = edge.length * (gj - gi);
     }
-    double energy = 0;
+    double energy = 0;  // skipped edges add exact zeros
     for (long long k = 0; k < count; ++k) {
         const RvdEdge& edge = edges[size_t(k)];
-        if (!(edge.length > 0)) continue;
         energy += terms[size_t(k)];
         if (gradient) {
             gradient->segment<3>(3 * edge.i) += termGradients[size_t(k)];

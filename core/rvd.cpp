@@ -228,14 +228,15 @@ struct RestrictedVoronoiDiagram::Impl {
     int storedNeighbours = 0;
 
     // Candidate lists (Verlet lists of molecular dynamics): per seed its kCandidates nearest
-    // seeds at the positions `candidatePosition` they were found at, and the squared distance
-    // of the last one. Every seed nearer than that at the time is in the list, and a seed
-    // moves by at most `drift` since then, so while the k-th nearest candidate is nearer now
-    // than (radius - 2 drift), the nearest candidates are the nearest seeds: the
-    // neighbour lists come from a sort of a few distances instead of a k-d tree search. L-BFGS
-    // steps move the seeds little, so the lists serve many evaluations.
+    // seeds at the positions `candidatePosition` they were found at, and the distance of the
+    // last one (the radius). Every seed nearer than that at the time is in the list; a seed
+    // that is not was at least the radius away and is now at least (radius - own move - largest
+    // move of any seed) away. While the 12th nearest candidate is nearer than that, the nearest
+    // candidates are the nearest seeds: the neighbour lists come from a sort of a few distances
+    // instead of a k-d tree search. L-BFGS steps move the seeds little, so the lists serve many
+    // evaluations (listFromCandidates).
     std::vector<Vec3> candidatePosition;
-    std::vector<uint32_t> candidateIndex;  // n * candidateCount
+    std::vector<uint32_t> candidateIndex;  // n * candidateCount, kept sorted by the last distances
     std::vector<double> candidateRadius;   // per seed: distance of its last candidate when found
     double candidateMargin = 0;            // median of (candidate radius - stored radius) at the build
     int candidateCount = 0;
@@ -297,6 +298,39 @@ struct RestrictedVoronoiDiagram::Impl {
         }
     }
 
+    // A bound on the distance² of x_i's k-th nearest seed: the largest distance² to k other
+    // distinct seeds (a list of an earlier evaluation), with a rounding margin.
+    double listBound(const Vec3& xi, const uint32_t* list, int count) const
+    {
+        double r2 = 0;
+        for (int q = 0; q < count; ++q) r2 = std::max(r2, ((*seeds)[list[q]] - xi).squaredNorm());
+        return r2 * (1 + 1e-9) + std::numeric_limits<double>::min();
+    }
+
+    // Seed i's neighbour list from its candidates, when they certify it (see candidateIndex):
+    // sorts the candidates by (distance², index) into `sorted` and keeps that order in the list
+    // (nearly sorted next time, so the insertion sort does little work). `drift` is the largest
+    // move of any seed since the lists were found. False: moved too far, or a coincident seed.
+    bool listFromCandidates(int i, double drift, std::vector<std::pair<double, uint32_t>>& sorted, uint32_t* listIndex,
+                            double* listDist2)
+    {
+        const Vec3& xi = (*seeds)[i];
+        uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
+        for (int q = 0; q < candidateCount; ++q) {
+            const std::pair<double, uint32_t> entry{((*seeds)[cand[q]] - xi).squaredNorm(), cand[q]};
+            int r = q;
+            for (; r > 0 && entry < sorted[r - 1]; --r) sorted[r] = sorted[r - 1];
+            sorted[r] = entry;
+        }
+        for (int q = 0; q < candidateCount; ++q) cand[q] = sorted[q].second;
+        // Complete up to the radius less both moves; a rounding margin keeps the test strict.
+        const double complete = candidateRadius[i] - drift - (xi - candidatePosition[i]).norm();
+        const double last = sorted[storedNeighbours - 1].first;
+        if (!(complete > 0 && last < complete * complete * (1 - 1e-9) && sorted[0].first > 0)) return false;
+        for (int q = 0; q < storedNeighbours; ++q) listIndex[q] = sorted[q].second, listDist2[q] = sorted[q].first;
+        return true;
+    }
+
     // Returns how many lists came from the candidate lists.
     int buildNeighbourLists()
     {
@@ -352,38 +386,17 @@ struct RestrictedVoronoiDiagram::Impl {
                 uint32_t* listIndex = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
                 double* listDist2 = neighbourDist2.data() + static_cast<size_t>(i) * storedNeighbours;
                 if (useCandidates) {
-                    // Sorted by (distance, index); the list is kept in the last call's order, so
-                    // it is nearly sorted and an insertion sort does little work.
-                    uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
-                    for (int q = 0; q < candidateCount; ++q) {
-                        const std::pair<double, uint32_t> entry{((*seeds)[cand[q]] - xi).squaredNorm(), cand[q]};
-                        int r = q;
-                        for (; r > 0 && entry < sorted[r - 1]; --r) sorted[r] = sorted[r - 1];
-                        sorted[r] = entry;
-                    }
-                    for (int q = 0; q < candidateCount; ++q) cand[q] = sorted[q].second;
-                    // Complete up to the candidate radius less this seed's move and the largest
-                    // move of any other; a rounding margin keeps the test strict.
-                    const double complete = candidateRadius[i] - drift - (xi - candidatePosition[i]).norm();
-                    const double last = sorted[storedNeighbours - 1].first;
-                    if (complete > 0 && last < complete * complete * (1 - 1e-9) && sorted[0].first > 0) {
-                        for (int q = 0; q < storedNeighbours; ++q) listIndex[q] = sorted[q].second, listDist2[q] = sorted[q].first;
+                    if (listFromCandidates(i, drift, sorted, listIndex, listDist2)) {
                         listDistinct[i] = 1;
                         continue;
                     }
-                    ++failed;  // moved too far, or a coincident seed: the k-d tree as before
+                    ++failed;  // the k-d tree as before
                 }
                 double bound = std::numeric_limits<double>::max();
-                if (listDistinct[i] && !buildCandidates) {
-                    double r2 = 0;
-                    for (int q = 0; q < storedNeighbours; ++q) r2 = std::max(r2, ((*seeds)[listIndex[q]] - xi).squaredNorm());
-                    bound = r2 * (1 + 1e-9) + std::numeric_limits<double>::min();  // rounding margin
-                } else if (previousCandidates) {
-                    const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
-                    double r2 = 0;
-                    for (int q = 0; q < candidateCount; ++q) r2 = std::max(r2, ((*seeds)[cand[q]] - xi).squaredNorm());
-                    bound = r2 * (1 + 1e-9) + std::numeric_limits<double>::min();
-                }
+                if (listDistinct[i] && !buildCandidates)
+                    bound = listBound(xi, listIndex, storedNeighbours);
+                else if (previousCandidates)
+                    bound = listBound(xi, candidateIndex.data() + static_cast<size_t>(i) * candidateCount, candidateCount);
                 const int want = buildCandidates ? k : storedNeighbours + 1;
                 BoundedKnnResult knn(want, idx.data(), d2.data(), bound);
                 seedTree().findNeighbors(knn, xi.data(), KnnSearchParams());
