@@ -65,10 +65,19 @@ echo closed >"$out/status-$mode.txt"
 INSIDE
 
 run_gui() {  # SCREEN_HEIGHT MODE QUERY MESH
-  set +e
-  GUI="$gui" FCVT_WINDOW_HELPER="$FCVT_SOURCE_DIR/scripts/meshlab_window.sh" timeout 300 xvfb-run -a -s "-screen 0 1000x$1x24" bash "$work/out/inside.sh" "$work/out" "$1" "$2" "$3" "$4" \
-    >"$work/out/xvfb-$2.log" 2>&1
-  set -e
+  # `xvfb-run -a` picks the first free display number; another test doing the same at that
+  # moment can take it (CTest runs two at once), and then MeshLab "could not connect to display".
+  # That is the harness, not the filter: up to three tries.
+  for attempt in 1 2 3; do
+    rm -f "$work/out/status-$2.txt"
+    set +e
+    GUI="$gui" FCVT_WINDOW_HELPER="$FCVT_SOURCE_DIR/scripts/meshlab_window.sh" timeout 300 xvfb-run -a -s "-screen 0 1000x$1x24" bash "$work/out/inside.sh" "$work/out" "$1" "$2" "$3" "$4" \
+      >"$work/out/xvfb-$2.log" 2>&1
+    set -e
+    grep -aqs "could not connect to display" "$work/out/xvfb-$2.log" "$work/out/gui-$2.log" || break
+    echo "GUI run $2: the virtual display was taken (try $attempt), again"
+    sleep 2
+  done
   [ -e "$work/out/display-started" ] || skip "the virtual display did not start"
   [ "$(cat "$work/out/status-$2.txt" 2>/dev/null)" = closed ] || { cat "$work/out/gui-$2.log"; fail "GUI run $2: $(cat "$work/out/status-$2.txt" 2>/dev/null)"; }
 }
