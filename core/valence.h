@@ -30,7 +30,8 @@ struct ValenceParams {
     //! Final fixed-connectivity relaxation steps (0 = none). 20 rather than 10: the longer
     //! look-ahead's extra operations leave Q_avg 0.001–0.003 lower after 10 steps (fandisk 5000
     //! 0.949, camelhead 3000 0.949); 20 steps bring it back (0.951 / 0.951, fertility 0.956,
-    //! bunny 0.954) for about a second more on a 3000-vertex mesh on a loaded machine.
+    //! bunny 0.954) for about a second more on a 3000-vertex mesh on a loaded machine (figures
+    //! of the earlier mean-of-neighbours step).
     int relaxIterations = 20;
     //! Weight w of a border vertex's term in R (interior vertices: 1). A disk's valences owe
     //! Σ(o − d) = 6 (Euler): the deficit sits either at border vertices of valence 3 (where the

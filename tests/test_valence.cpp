@@ -268,8 +268,48 @@ TEST(Valence, BorderWeightMovesTheDisksValenceDeficitInside)
     EXPECT_GT(weighted.thetaMin, flat.thetaMin - 2.0);
 }
 
+// The final relaxation alone (no operation): a valence-6 lattice whose interior vertices were
+// pushed about becomes equilateral again; its fixed border stays where it is.
+TEST(Valence, RelaxationMakesAJitteredLatticeEquilateral)
+{
+    const TriMesh plane = hexPlane(14, 12);
+    TriMesh mesh = plane;
+    const int cols = 14, rows = 12;
+    unsigned state = 12345;
+    auto jitter = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return 0.18 * ((state >> 8) / double(1u << 24) - 0.5) * 2;
+    };
+    for (int j = 1; j < rows; ++j)
+        for (int i = 1; i < cols; ++i) {
+            Vec3& p = mesh.vertices[j * (cols + 1) + i];
+            p.x() += jitter();
+            p.y() += jitter();
+        }
+    const QualityMetrics before = computeQuality(mesh);
+    ASSERT_LT(before.qAvg, 0.95);
+    ASSERT_LT(before.thetaMin, 45.0);
+
+    ClosestPointTree tree(plane);
+    const ValenceSurface surface{plane, tree, {}, nullptr};
+    ValenceParams params;
+    params.maxRounds = 0;
+    ValenceStats stats;
+    const TriMesh relaxed = optimizedCopy(mesh, surface, params, &stats);
+    ASSERT_EQ(relaxed.faces, mesh.faces);
+    EXPECT_EQ(stats.flips + stats.collapses + stats.splits, 0);
+    const QualityMetrics after = computeQuality(relaxed);
+    EXPECT_GT(after.qAvg, 0.99);
+    EXPECT_GT(after.thetaMin, 52.0);
+    for (int v = 0; v < relaxed.vertexCount(); ++v) {
+        const int i = v % (cols + 1), j = v / (cols + 1);
+        EXPECT_NEAR(relaxed.vertices[v].z(), 0.0, 1e-12);
+        if (i == 0 || j == 0 || i == cols || j == rows) EXPECT_EQ(relaxed.vertices[v], mesh.vertices[v]);
+    }
+}
+
 // Issue 5's bars through the whole pipeline (seed 1, defaults), with a small margin under the
-// measured figures: V6% >= 94, θ_min >= 32°, Q_avg >= 0.95, no angle under 30°; the vertex
+// measured figures: V6% >= 94, θ_min >= 32°, Q_avg >= 0.95 (now higher), no angle under 30°; the vertex
 // count within 1 % of the target and the edges about as aligned to the field as before.
 TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
 {
@@ -277,9 +317,12 @@ TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
         const char* file;
         int vertices;
         double minV6;  // fandisk, a CAD part without --feature-angle: measured 94.0 (seeds 1, 2), 93.9 (3)
+        // Issue 13: the relaxation down the shape energy; measured 0.965 / 0.965 / 0.958 (the
+        // mean-of-neighbours step it replaced: 0.958 / 0.956 / 0.951).
+        double minQAvg;
     };
-    for (const Case& c : {Case{"torus.obj", 1000, 94.2}, Case{"fertility.off", 3000, 94.2},
-                          Case{"fandisk.off", 5000, 93.9}}) {
+    for (const Case& c : {Case{"torus.obj", 1000, 94.2, 0.962}, Case{"fertility.off", 3000, 94.2, 0.962},
+                          Case{"fandisk.off", 5000, 93.9, 0.955}}) {
         SCOPED_TRACE(c.file);
         RemeshParams params;
         params.vertexCount = c.vertices;
@@ -287,12 +330,14 @@ TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
         const RemeshResult r = remesh(readMesh(testmesh::resource(c.file)), params);
         EXPECT_GE(r.metrics.v6Pct, c.minV6);
         EXPECT_GE(r.metrics.thetaMin, 32.0);
-        EXPECT_GE(r.metrics.qAvg, 0.95);
+        EXPECT_GE(r.metrics.qAvg, c.minQAvg);
         EXPECT_EQ(r.metrics.pctLt30, 0.0);
         EXPECT_NEAR(r.mesh.vertexCount(), c.vertices, 0.01 * c.vertices);
-        // The relaxation's field step brings the alignment back to about where it was (the
-        // operations alone leave it ~20 % worse).
-        EXPECT_LE(r.valence.fieldDistanceAfter, 1.05 * r.valence.fieldDistanceBefore);
+        // The relaxation's field step brings most of the alignment back (the operations alone
+        // leave it ~23 % worse; measured after the relaxation: torus +0.7 %, fertility +8.4 %,
+        // fandisk -5.7 % against before the stage).
+        EXPECT_LE(r.valence.fieldDistanceAfter, 1.10 * r.valence.fieldDistanceBefore);
+        EXPECT_LT(r.valence.fieldDistanceAfter, 0.95 * r.valence.fieldDistanceOperations);
         EXPECT_TRUE(computeTopology(r.mesh).manifold());
     }
 }
