@@ -1,5 +1,6 @@
 """Same seed, same output bytes: two runs with the same seed, and runs with 1 and 2 threads,
-write identical files (PLY and OBJ). Usage: check_determinism.py FCVT INPUT VERTICES WORK_DIR"""
+write identical files (PLY and OBJ), with or without --report (without it --quiet skips
+the distances). Usage: check_determinism.py FCVT INPUT VERTICES WORK_DIR"""
 import filecmp
 import os
 import sys
@@ -22,6 +23,10 @@ for ext in ["ply", "obj"]:
     one_thread = remesh(f"t1.{ext}", "--threads", "1")
     check(filecmp.cmp(first, second, shallow=False), f"two runs with the same seed differ ({ext})")
     check(filecmp.cmp(first, one_thread, shallow=False), f"--threads 1 and --threads 2 differ ({ext})")
+
+# --quiet without --report skips the distances; the mesh written must not depend on it.
+reported = remesh("reported.ply", "--threads", "2", "--report", os.path.join(work, "reported.json"))
+check(filecmp.cmp(os.path.join(work, "a.ply"), reported, shallow=False), "--report changes the output mesh")
 
 other_seed = remesh("seed8.ply", "--threads", "2", seed="8")
 check(not filecmp.cmp(os.path.join(work, "a.ply"), other_seed, shallow=False), "another seed gives the same output")
