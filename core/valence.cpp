@@ -1084,8 +1084,9 @@ void ValenceOptimizer::relax()
     };
     allFaceSags(faceSagStart);
     // The check only asks whether a face's sag exceeds its limit. The distance to the surface is
-    // 1-Lipschitz and a face's sag points (centroid, edge midpoints) move by at most the largest
-    // move of its corners, so a face's last measured sag plus that move bounds its sag now: when
+    // 1-Lipschitz and each of a face's sag points (centroid, edge midpoints) moves by at most the
+    // mean of its corners' moves, so a face's last measured sag plus the largest of those bounds
+    // its sag now: when
     // the bound is under the limit (less a rounding margin) the queries are skipped and the answer
     // is the one they would give. Per face: the last measured sag and its corners then.
     std::vector<double> sagMeasured(faceSagStart);
@@ -1094,8 +1095,11 @@ void ValenceOptimizer::relax()
         if (faceAlive_[f]) sagCorners[f] = {pos_[faces_[f][0]], pos_[faces_[f][1]], pos_[faces_[f][2]]};
     auto sagExceeds = [&](int f, double limit) {
         const Face& t = faces_[f];
-        double moved = 0;
-        for (int k = 0; k < 3; ++k) moved = std::max(moved, (pos_[t[k]] - sagCorners[f][k]).norm());
+        double m[3];
+        for (int k = 0; k < 3; ++k) m[k] = (pos_[t[k]] - sagCorners[f][k]).norm();
+        // An edge midpoint moved by at most the mean of its corners' moves, the centroid by at
+        // most the mean of all three: the largest of these is the largest pair's mean.
+        const double moved = 0.5 * (m[0] + m[1] + m[2] - std::min({m[0], m[1], m[2]}));
         if (sagMeasured[f] + moved <= limit * (1 - 1e-9)) return false;
         sagMeasured[f] = faceSag(f);
         sagCorners[f] = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
