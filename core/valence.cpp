@@ -37,8 +37,8 @@ constexpr double kMaxRelaxStep = 0.25;
 //! Step of the final relaxation down the shape energy, in units of the vertex's mean incident
 //! face area times the energy's gradient: about a Newton step of the energy's edge-length part
 //! on a valence-6 fan (its Hessian there is ~ 6 * 4 / (4 sqrt3 A)). Measured, fertility 3000 /
-//! fandisk 5000 Q_avg (Jacobi, no momentum, no field term): 0.2 -> 0.963 / 0.956, 0.3 -> 0.963 / 0.956, 0.45
-//! oscillates (0.897 / 0.887).
+//! fandisk 5000 Q_avg (Jacobi, no momentum, no field term): 0.2 -> 0.963 / 0.956, 0.3 -> 0.963 /
+//! 0.956, 0.45 oscillates (0.897 / 0.887).
 constexpr double kShapeStep = 0.25;
 //! Heavy-ball momentum of the final relaxation: each step adds this fraction of the vertex's
 //! last (accepted, tangential) move. The shape energy's smooth modes converge slowly under
@@ -128,7 +128,6 @@ bool isFeatureLike(VertexRole r) { return r == VertexRole::Feature || r == Verte
 //! border weight made operations there; kept in place 0.17 %, bunny 5000 0.47 -> 0.43 %).
 bool isFixed(VertexRole r) { return r == VertexRole::Corner || r == VertexRole::Boundary; }
 
-//! The smallest angle of triangle (p0, p1, p2) in radians (atan2 form, as computeQuality).
 //! Gradient with respect to v of the shape energy of triangle (v, a, b) (counter-clockwise
 //! seen from its normal): e = (|a - v|^2 + |b - v|^2 + |a - b|^2) / (4 sqrt3 |t|), the inverse
 //! of the mean ratio [Liu & Joe 1994; Knupp 2001]: 1 for an equilateral triangle, growing
@@ -147,6 +146,7 @@ Vec3 shapeEnergyGradient(const Vec3& v, const Vec3& a, const Vec3& b, double& ar
     return 2 * (2 * v - a - b) / (c * area) - lengths / (c * area * area) * areaGradient;
 }
 
+//! The smallest angle of triangle (p0, p1, p2) in radians (atan2 form, as computeQuality).
 double smallestAngle(const Vec3& p0, const Vec3& p1, const Vec3& p2)
 {
     const Vec3 p[3] = {p0, p1, p2};
@@ -1086,9 +1086,9 @@ void ValenceOptimizer::relax()
     // The check only asks whether a face's sag exceeds its limit. The distance to the surface is
     // 1-Lipschitz and each of a face's sag points (centroid, edge midpoints) moves by at most the
     // mean of its corners' moves, so a face's last measured sag plus the largest of those bounds
-    // its sag now: when
-    // the bound is under the limit (less a rounding margin) the queries are skipped and the answer
-    // is the one they would give. Per face: the last measured sag and its corners then.
+    // its sag now: when the bound is under the limit (less a rounding margin) the queries are
+    // skipped and the answer is the one they would give. Per face: the last measured sag and its
+    // corners then.
     std::vector<double> sagMeasured(faceSagStart);
     std::vector<std::array<Vec3, 3>> sagCorners(faces_.size());
     for (int f = 0; f < static_cast<int>(faces_.size()); ++f)

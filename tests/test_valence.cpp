@@ -309,8 +309,9 @@ TEST(Valence, RelaxationMakesAJitteredLatticeEquilateral)
 }
 
 // Issue 5's bars through the whole pipeline (seed 1, defaults), with a small margin under the
-// measured figures: V6% >= 94, θ_min >= 32°, Q_avg >= 0.95 (now higher), no angle under 30°; the vertex
-// count within 1 % of the target and the edges about as aligned to the field as before.
+// measured figures: V6% >= 94, θ_min >= 32°, Q_avg >= 0.95 (issue 13: higher), no angle under
+// 30°; the vertex count within 1 % of the target and the edges about as aligned to the field as
+// before.
 TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
 {
     struct Case {
