@@ -1,9 +1,11 @@
 #include "closest_point.h"
 
 #include "errors.h"
+#include "mesh_edges.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -381,6 +383,71 @@ ClosestPoint ClosestPointTree::closest(const Vec3& p, int hintFace) const
     result.face = bestFace;
     result.squaredDistance = best2;
     return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Walk
+
+SurfaceWalk::SurfaceWalk(const TriMesh& mesh) : mesh_(mesh), across_(3 * mesh.faces.size(), -1)
+{
+    const EdgeTable edges = buildEdgeTable(mesh);
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        if (edges.faceCount(e) != 2) continue;
+        const int h0 = edges.halfEdge(e, 0), h1 = edges.halfEdge(e, 1);
+        across_[h0] = h1 / 3;
+        across_[h1] = h0 / 3;
+    }
+    fanFirst_.assign(mesh.vertices.size() + 1, 0);
+    for (const Face& t : mesh.faces)
+        for (int v : t) ++fanFirst_[v + 1];
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) fanFirst_[v + 1] += fanFirst_[v];
+    fan_.resize(fanFirst_.back());
+    std::vector<int> fill(fanFirst_.begin(), fanFirst_.end() - 1);
+    for (int f = 0; f < mesh.faceCount(); ++f)
+        for (int v : mesh.faces[f]) fan_[fill[v]++] = f;
+}
+
+double SurfaceWalk::distanceBound(const Vec3& p, int startFace) const
+{
+    if (startFace < 0 || startFace >= mesh_.faceCount()) return kInfinity;
+    // A few steps reach the answer from a face a sample spacing away; more would only cost.
+    constexpr int kMaxSteps = 8;
+    auto distance2 = [&](int f, Vec3& bary) {
+        const Face& t = mesh_.faces[f];
+        Vec3 point;
+        return closestOnTriangle(p, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]], point, bary);
+    };
+    Vec3 bary;
+    int face = startFace, previous = -1;
+    double best2 = distance2(face, bary);
+    for (int step = 0; step < kMaxSteps; ++step) {
+        // On the edge opposite a zero barycentric coordinate the face across it may hold a
+        // nearer point; on a corner (two zeros), any face around that vertex.
+        const int zeros = (bary[0] == 0.0) + (bary[1] == 0.0) + (bary[2] == 0.0);
+        if (zeros == 0) break;  // inside the face: the nearest point of its neighbourhood
+        int next = -1;
+        double next2 = best2;
+        Vec3 nextBary, candidateBary;
+        auto consider = [&](int g) {
+            if (g < 0 || g == face || g == previous) return;
+            const double d2 = distance2(g, candidateBary);
+            if (d2 < next2) next = g, next2 = d2, nextBary = candidateBary;
+        };
+        if (zeros == 1) {
+            for (int k = 0; k < 3; ++k)
+                if (bary[k] == 0.0) consider(across_[3 * face + (k + 1) % 3]);
+        } else {
+            const int corner = bary[0] != 0.0 ? 0 : (bary[1] != 0.0 ? 1 : 2);
+            const int v = mesh_.faces[face][corner];
+            for (int k = fanFirst_[v]; k < fanFirst_[v + 1]; ++k) consider(fan_[k]);
+        }
+        if (next < 0) break;
+        best2 = next2;
+        bary = nextBary;
+        previous = face;
+        face = next;
+    }
+    return std::sqrt(best2);
 }
 
 }  // namespace fieldcvt

@@ -41,4 +41,26 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+//! Upper bounds of the distance from a point to a triangle mesh, without the tree: a short walk
+//! over the faces from one near the answer (e.g. a vertex's closest face), to the face across
+//! the edge the closest point lies on, or to the nearest face around the corner it lies on,
+//! while that gets nearer. Every face
+//! visited holds a surface point, so the result is never below the exact distance, and on a
+//! surface that is locally a graph it is the exact one (bit for bit: the same triangle test as
+//! ClosestPointTree). For checks that only compare a distance with a limit: a bound under the
+//! limit answers them without the tree query (several times the cost).
+class SurfaceWalk {
+public:
+    //! The mesh must outlive the walk.
+    explicit SurfaceWalk(const TriMesh& mesh);
+    //! A distance from p to the mesh that is at least the exact one; +infinity when `startFace`
+    //! is out of range. Thread-safe.
+    double distanceBound(const Vec3& p, int startFace) const;
+
+private:
+    const TriMesh& mesh_;
+    std::vector<int> across_;  //!< per half-edge 3 f + k: the face across it, -1 on a border or non-manifold edge
+    std::vector<int> fanFirst_, fan_;  //!< CSR: the faces around each vertex
+};
+
 }  // namespace fieldcvt

@@ -204,12 +204,22 @@ private:
     bool hasEdge(int a, int b) const;
     Vec3 surfaceNormal(const ClosestPoint& cp) const;
     Vec3 faceUnitNormal(int f) const;
-    //! Distance from the centroid of face f to the input surface: large where the face cuts
-    //! across a crease or a thin part of the input.
+    //! Largest distance from face f's centroid and edge midpoints to the input surface: large
+    //! where the face cuts across a crease or a thin part of the input.
     double faceSag(int f) const;
-    //! Smallest angle (radians) and smallest normal agreement over the faces around `verts`.
-    //! Also the largest sag (faceSag) there.
-    void localQuality(const std::vector<int>& verts, double& minAngle, double& minDot, double& maxSag);
+    //! At least faceSag(f), from walks over the input (SurfaceWalk) instead of tree queries;
+    //! usually equal to it.
+    double faceSagBound(int f) const;
+    //! faceSag(f), remembered with f's corner positions: an operation's check measures the faces
+    //! around it before, and most of them were measured by an earlier check and have not moved.
+    double cachedFaceSag(int f);
+    //! The alive faces around `verts`, sorted, without repeats.
+    void facesAround(const std::vector<int>& verts, std::vector<int>& faces) const;
+    //! Smallest angle (radians) and smallest normal agreement over `faces`.
+    void localShape(const std::vector<int>& faces, double& minAngle, double& minDot) const;
+    //! Whether faceSag exceeds `limit` on one of `faces`: the bound first, the exact sag (cached)
+    //! only where the bound does not decide. The same answer as comparing faceSag itself.
+    bool sagExceeds(const std::vector<int>& faces, double limit);
 
     // --- operations ---------------------------------------------------------------------------
     bool evaluateFlip(int a, int b, int& gain, int& c, int& d, int& f1, int& f2) const;
@@ -254,6 +264,12 @@ private:
     const ValenceSurface& surface_;
     const ValenceParams& params_;
     std::vector<Vec3> inputNormals_;  //!< area-weighted vertex normals of the input
+    SurfaceWalk walk_;                //!< distance bounds on the input (faceSagBound)
+    struct SagEntry {
+        std::array<Vec3, 3> corners;
+        double sag = -1;  //!< < 0: not measured
+    };
+    std::vector<SagEntry> sagCache_;  //!< per face, see cachedFaceSag
 
     std::vector<Vec3> pos_;
     std::vector<ClosestPoint> closest_;  //!< per vertex: its closest point on the input
@@ -280,7 +296,7 @@ private:
 
 ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
                                    const ValenceParams& params)
-    : mesh_(mesh), roles_(roles), surface_(surface), params_(params)
+    : mesh_(mesh), roles_(roles), surface_(surface), params_(params), walk_(surface.input)
 {
     const int n = mesh.vertexCount();
     for (const Face& f : mesh.faces)
@@ -567,6 +583,38 @@ double ValenceOptimizer::faceSag(int f) const
     return sag;
 }
 
+double ValenceOptimizer::faceSagBound(int f) const
+{
+    // The same points and starting faces as faceSag.
+    const Face& t = faces_[f];
+    const Vec3 points[4] = {(pos_[t[0]] + pos_[t[1]] + pos_[t[2]]) / 3.0, 0.5 * (pos_[t[0]] + pos_[t[1]]),
+                            0.5 * (pos_[t[1]] + pos_[t[2]]), 0.5 * (pos_[t[2]] + pos_[t[0]])};
+    const int starts[4] = {closest_[t[0]].face, closest_[t[0]].face, closest_[t[1]].face, closest_[t[2]].face};
+    double sag = 0;
+    for (int k = 0; k < 4; ++k) sag = std::max(sag, walk_.distanceBound(points[k], starts[k]));
+    return sag;
+}
+
+double ValenceOptimizer::cachedFaceSag(int f)
+{
+    if (sagCache_.size() < faces_.size()) sagCache_.resize(faces_.size());
+    SagEntry& entry = sagCache_[f];
+    const Face& t = faces_[f];
+    const std::array<Vec3, 3> corners = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
+    if (entry.sag < 0 || entry.corners != corners) {
+        entry.corners = corners;
+        entry.sag = faceSag(f);
+    }
+    return entry.sag;
+}
+
+bool ValenceOptimizer::sagExceeds(const std::vector<int>& faces, double limit)
+{
+    for (int f : faces)
+        if (faceSagBound(f) > limit && cachedFaceSag(f) > limit) return true;
+    return false;
+}
+
 Vec3 ValenceOptimizer::faceUnitNormal(int f) const
 {
     const Face& t = faces_[f];
@@ -575,18 +623,20 @@ Vec3 ValenceOptimizer::faceUnitNormal(int f) const
     return length > 0 ? Vec3(n / length) : Vec3(Vec3::Zero());
 }
 
-void ValenceOptimizer::localQuality(const std::vector<int>& verts, double& minAngle, double& minDot, double& maxSag)
+void ValenceOptimizer::facesAround(const std::vector<int>& verts, std::vector<int>& faces) const
 {
-    std::vector<int> faces;
+    faces.clear();
     for (int v : verts)
         if (vertexAlive_[v]) faces.insert(faces.end(), vertexFaces_[v].begin(), vertexFaces_[v].end());
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+}
+
+void ValenceOptimizer::localShape(const std::vector<int>& faces, double& minAngle, double& minDot) const
+{
     minAngle = kPi;
     minDot = 1;
-    maxSag = 0;
     for (int f : faces) {
-        maxSag = std::max(maxSag, faceSag(f));
         const Face& t = faces_[f];
         minAngle = std::min(minAngle, smallestAngle(pos_[t[0]], pos_[t[1]], pos_[t[2]]));
         const Vec3 reference = normal_[t[0]] + normal_[t[1]] + normal_[t[2]];
@@ -973,8 +1023,11 @@ bool ValenceOptimizer::tryApply(const Candidate& cand, std::vector<int>& changed
 {
     changed.clear();
     const std::vector<int>& region = cand.region;  // faces around it are compared before and after
-    double angleBefore, dotBefore, sagBefore;
-    localQuality(region, angleBefore, dotBefore, sagBefore);
+    std::vector<int> faces;
+    facesAround(region, faces);
+    double angleBefore, dotBefore, sagBefore = 0;
+    localShape(faces, angleBefore, dotBefore);
+    for (int f : faces) sagBefore = std::max(sagBefore, cachedFaceSag(f));
 
     const size_t mark = undo_.size();
     logging_ = true;
@@ -990,14 +1043,16 @@ bool ValenceOptimizer::tryApply(const Candidate& cand, std::vector<int>& changed
         smoothLocally(smooth);
         std::vector<int> after = region;
         after.insert(after.end(), smooth.begin(), smooth.end());
-        double angleAfter, dotAfter, sagAfter;
-        localQuality(after, angleAfter, dotAfter, sagAfter);
+        facesAround(after, faces);
+        double angleAfter, dotAfter;
+        localShape(faces, angleAfter, dotAfter);
         const double minAngle = params_.minAngleDegrees * kPi / 180.0;
         const bool folded = dotAfter < std::min(kMinNormalDot, dotBefore);
         const bool sharper = angleAfter < minAngle && angleAfter < angleBefore - 1e-9;
-        // A flip or collapse across a crease cuts it (d_H): refused like a fold.
-        const bool offSurface = sagAfter > std::max(kOperationSagGrowth * sagBefore, kMaxSag * edgeLength_);
-        ok = !folded && !sharper && !offSurface && angleAfter > 0;
+        // A flip or collapse across a crease cuts it (d_H): refused like a fold (measured last,
+        // the costliest test).
+        ok = !folded && !sharper && angleAfter > 0 &&
+             !sagExceeds(faces, std::max(kOperationSagGrowth * sagBefore, kMaxSag * edgeLength_));
     }
     if (!ok) {
         rollback(mark);
@@ -1101,8 +1156,12 @@ void ValenceOptimizer::relax()
         // most the mean of all three: the largest of these is the largest pair's mean.
         const double moved = 0.5 * (m[0] + m[1] + m[2] - std::min({m[0], m[1], m[2]}));
         if (sagMeasured[f] + moved <= limit * (1 - 1e-9)) return false;
-        sagMeasured[f] = faceSag(f);
         sagCorners[f] = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
+        // A walk's bound under the limit answers as well (the exact sag is at most the bound),
+        // at a fraction of the tree queries' cost; the bound serves the Lipschitz test above.
+        sagMeasured[f] = faceSagBound(f);
+        if (sagMeasured[f] <= limit) return false;
+        sagMeasured[f] = faceSag(f);
         return sagMeasured[f] > limit;
     };
     auto faceMeasures = [&](int f, double& angle, double& dot) {

@@ -181,5 +181,63 @@ TEST(ClosestPointTree, EmptyMeshAndBadIndices)
     EXPECT_THROW(ClosestPointTree{bad}, InvalidInputError);
 }
 
+// SurfaceWalk: starts a sample spacing away from the answer, as the valence stage's sag checks
+// do (a corner's closest face for an edge midpoint or a face centroid).
+struct WalkCounts {
+    int queries = 0, exact = 0, startExact = 0;  //!< startExact: the start face holds the answer
+};
+
+WalkCounts walkFromNeighbourhood(const TriMesh& mesh, double offset, std::uint64_t seed)
+{
+    const ClosestPointTree tree(mesh);
+    const SurfaceWalk walk(mesh);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    WalkCounts counts;
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+        const Face& t = mesh.faces[f];
+        const Vec3 centroid = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+        const double edge = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).norm();
+        // Up to about two faces away from f along the surface, a little off it.
+        const Vec3 normal = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).normalized();
+        Vec3 along(u(rng), u(rng), u(rng));
+        along -= along.dot(normal) * normal;
+        const Vec3 p = centroid + 1.5 * edge * along + offset * edge * u(rng) * normal;
+        const ClosestPoint exact = tree.closest(p);
+        const double exactDistance = (exact.point - p).norm();
+        const double bound = walk.distanceBound(p, f);
+        EXPECT_GE(bound, exactDistance) << "face " << f;  // never below the exact distance
+        ++counts.queries;
+        counts.exact += bound == exactDistance;
+        counts.startExact += exact.face == f;
+    }
+    return counts;
+}
+
+TEST(SurfaceWalk, BoundsTheDistanceAndUsuallyEqualsIt)
+{
+    for (const TriMesh& mesh : {icosphere(3), torus(40, 24)}) {
+        const WalkCounts near = walkFromNeighbourhood(mesh, 0.2, 21);
+        // Bit for bit the tree's answer on almost every query (the same triangle test), though the
+        // start face holds the answer only for a few: the walk does the work.
+        EXPECT_GE(near.exact, 0.97 * near.queries) << near.exact << " of " << near.queries;
+        EXPECT_LE(near.startExact, 0.2 * near.queries);
+    }
+}
+
+TEST(SurfaceWalk, StopsAtTheBorderAndRejectsBadStarts)
+{
+    const TriMesh grid = testmesh::planeGrid(8);
+    const SurfaceWalk walk(grid);
+    const ClosestPointTree tree(grid);
+    // Beyond the border: the bound is still a surface point's distance, at least the exact one.
+    for (int f = 0; f < grid.faceCount(); f += 7) {
+        const Vec3 p(1.7, -0.4, 0.3);
+        EXPECT_GE(walk.distanceBound(p, f), (tree.closest(p).point - p).norm());
+    }
+    EXPECT_TRUE(std::isinf(walk.distanceBound(Vec3::Zero(), -1)));
+    EXPECT_TRUE(std::isinf(walk.distanceBound(Vec3::Zero(), grid.faceCount())));
+}
+
 }  // namespace
 }  // namespace fieldcvt
