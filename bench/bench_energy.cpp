@@ -262,6 +262,37 @@ void BM_ValenceFertility3000(benchmark::State& state)
 }
 BENCHMARK(BM_ValenceFertility3000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The valence stage's sag measure (distance from a face's centroid and edge midpoints to the
+// surface) on the fertility 3000 RDT, one thread: Arg 0 the exact tree queries started from a
+// corner's closest face (faceSag), Arg 1 the SurfaceWalk bounds from the same faces, which the
+// stage now asks first (the tree only where a bound exceeds the limit).
+void BM_SagQueriesFertility3000(benchmark::State& state)
+{
+    const FertilitySetup& setup = fertility3000();
+    const ClosestPointTree tree(setup.surface);
+    const SurfaceWalk walk(setup.surface);
+    const TriMesh& mesh = setup.rdt;
+    std::vector<int> cornerFace(mesh.vertices.size());
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) cornerFace[v] = tree.closest(mesh.vertices[v]).face;
+    const bool bounds = state.range(0) == 1;
+    for (auto _ : state) {
+        double largest = 0;
+        for (const Face& t : mesh.faces) {
+            const Vec3& a = mesh.vertices[t[0]];
+            const Vec3& b = mesh.vertices[t[1]];
+            const Vec3& c = mesh.vertices[t[2]];
+            const Vec3 points[4] = {(a + b + c) / 3.0, 0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
+            const int starts[4] = {cornerFace[t[0]], cornerFace[t[0]], cornerFace[t[1]], cornerFace[t[2]]};
+            for (int k = 0; k < 4; ++k)
+                largest = std::max(largest, bounds ? walk.distanceBound(points[k], starts[k])
+                                                   : (tree.closest(points[k], starts[k]).point - points[k]).norm());
+        }
+        benchmark::DoNotOptimize(largest);
+    }
+    state.counters["queries"] = 4.0 * mesh.faceCount();
+}
+BENCHMARK(BM_SagQueriesFertility3000)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // d_RMS / d_H of the metrics stage: threads, random samples per mesh (the report's 50 000 =
 // RemeshParams::distanceSamples, against the dense 200 000 it took before and `fcvt metrics` takes).
 void BM_DistanceFertility3000(benchmark::State& state)
@@ -275,12 +306,21 @@ BENCHMARK(BM_DistanceFertility3000)
     ->Args({1, 200000})->Args({1, 50000})->Args({2, 200000})->Args({2, 50000})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The whole pipeline: Arg 1 the threads, Arg 2 the schedule (0: the defaults, 10 Lloyd + 10 CVT
+// + 40 FCVT iterations with look-ahead 8; 1: the paper's fixed schedule after 30 Lloyd steps,
+// 65 + 65, with the look-ahead of that time, 6).
 void BM_RemeshBunny5000(benchmark::State& state)
 {
     const TriMesh input = readMesh(std::string(FCVT_RESOURCES_DIR) + "/bunny.obj");
     RemeshParams params;
     params.vertexCount = 5000;
     params.threads = static_cast<int>(state.range(0));
+    if (state.range(1) == 1) {
+        params.lloydIterations = 30;
+        params.cvtIterations = 65;
+        params.fcvtIterations = 65;
+        params.valence.lookAheadDepth = 6;
+    }
     params.computeDistances = false;
     for (auto _ : state) {
         RemeshResult result = remesh(input, params);
@@ -288,7 +328,7 @@ void BM_RemeshBunny5000(benchmark::State& state)
         state.counters["evaluations"] = result.evaluations;
     }
 }
-BENCHMARK(BM_RemeshBunny5000)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_RemeshBunny5000)->Args({2, 0})->Args({2, 1})->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

@@ -27,9 +27,11 @@ namespace fieldcvt::cli {
 
 namespace {
 
-//! The pure CVT of the comparison (paper §5: 130 L-BFGS iterations, no field term).
+//! The pure CVT of the comparison (paper §5: 130 L-BFGS iterations, no field term), after the 30
+//! Lloyd steps it always had (RemeshParams::lloydIterations is 10 for the short FCVT schedule).
 RemeshParams cvtParams(RemeshParams p)
 {
+    p.lloydIterations = 30;
     p.lambda = 0;
     p.cvtIterations = 130;
     p.fcvtIterations = 0;

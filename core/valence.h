@@ -44,12 +44,15 @@ struct ValenceParams {
     int borderWeight = 4;
     //! When no single operation lowers R: chains of up to this many operations, R-neutral flips
     //! (each moves a 5–7 pair by one edge) ending in one that lowers R (the pair met another
-    //! defect); 0 or 1 = off, 2 = one flip then the operation it enables, at most 6. Measured
-    //! (seed 1, with relaxIterations 20): depth 2 -> 5 -> 6 gives V6% 93.3 -> 95.2 -> 95.2 on
-    //! torus 1000, 93.2 -> 94.8 -> 95.4 on fertility 3000, bunny 5000 94.1 -> 94.7, fandisk 5000
-    //! 93.7 -> 94.0, mask 4000 96.4 -> 96.8. Depth 7–8 (with a longer chain array) adds 0.2–0.8
-    //! more but costs Q_avg (bunny 0.950 / 0.948, camelhead 0.946) and 2–3× the stage's time.
-    int lookAheadDepth = 6;
+    //! defect); 0 or 1 = off, 2 = one flip then the operation it enables, at most 8. Measured
+    //! (seed 1, with relaxIterations 20, the paper's 65 + 65 schedule): depth 2 -> 5 -> 6 gives
+    //! V6% 93.3 -> 95.2 -> 95.2 on torus 1000, 93.2 -> 94.8 -> 95.4 on fertility 3000, bunny 5000
+    //! 94.1 -> 94.7, fandisk 5000 93.7 -> 94.0, mask 4000 96.4 -> 96.8. 8 since the short
+    //! schedule (RemeshParams::lloydIterations), which leaves ~3 V6 points more to this stage:
+    //! with 10 + 10 + 40 iterations, depth 6 -> 8 gives fandisk 5000 94.0 -> 94.6, fertility
+    //! 3000 93.8 -> 94.6 (seeds 1–4: lowest 93.4 -> 94.0 / 93.8 -> 94.3), bunny 94.3 -> 95.0,
+    //! Q_avg -0.001 to -0.002, the stage +10 to 25 % of its time.
+    int lookAheadDepth = 8;
     //! Weight of the field-alignment term in the final relaxation, on the scale of
     //! RemeshParams::lambda (E_field against E_CVT at mean cell area 1); 0 = smoothing only.
     //! 0.01 by measurement: brings the mean direction distance back to about its value before

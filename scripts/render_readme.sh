@@ -43,7 +43,7 @@ render "$work/bunny-field.ply" --out "$img/bunny-fcvt-field.png" --valence --dot
 # 3. The lambda sweep on fertility at 3000 vertices, without the valence optimisation (it
 #    would hide what the field term does): lambda 0 with the pure-CVT schedule, 0.002, 0.01.
 "$fcvt" remesh "$here/resources/fertility.off" "$work/fertility-lambda-0.ply" --vertices 3000 --lambda 0 \
-  --cvt-iterations 130 --fcvt-iterations 0 --no-valence --quiet
+  --lloyd-iterations 30 --cvt-iterations 130 --fcvt-iterations 0 --no-valence --quiet
 for l in 0.002 0.01; do
   "$fcvt" remesh "$here/resources/fertility.off" "$work/fertility-lambda-$l.ply" --vertices 3000 --lambda "$l" --no-valence --quiet
 done

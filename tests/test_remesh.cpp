@@ -146,15 +146,21 @@ TEST(Remesh, FieldAlignmentMakesTheCylinderMoreRegularThanCvt)
 {
     // The paper's cylinder experiment (Fig. 7): aligned to the maximal curvature direction,
     // FCVT has far fewer irregular vertices than CVT, with better triangles.
-    // (Measured at 500 vertices: CVT V6 86.3 %, Q_avg 0.941; FCVT 95.6 %, 0.966.)
+    // (Measured at 500 vertices: CVT V6 86.3 %, Q_avg 0.941; FCVT 95.6 %, 0.966.) The paper's
+    // fixed schedule for both: the default's 10 + 10 + 40 iterations leave the regularity to the
+    // valence stage (without it, FCVT 92.5 % against CVT's 94.4 % at 130 iterations).
     const TriMesh cylinder = readMesh(testmesh::resource("cylinder.off"));
     RemeshParams cvt;
+    cvt.lloydIterations = 30;
     cvt.vertexCount = 500;
     cvt.lambda = 0;
     cvt.cvtIterations = 130;
     cvt.fcvtIterations = 0;
     cvt.valenceOptimization = false;  // the energies alone, as in Fig. 7
     RemeshParams fcvt;
+    fcvt.lloydIterations = 30;
+    fcvt.cvtIterations = 65;
+    fcvt.fcvtIterations = 65;
     fcvt.vertexCount = 500;
     fcvt.valenceOptimization = false;
     fcvt.fieldSource = FieldSource::CurvatureMax;

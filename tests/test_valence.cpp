@@ -317,13 +317,16 @@ TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
     struct Case {
         const char* file;
         int vertices;
-        double minV6;  // fandisk, a CAD part without --feature-angle: measured 94.0 (seeds 1, 2), 93.9 (3)
-        // Issue 13: the relaxation down the shape energy; measured 0.965 / 0.965 / 0.958 (the
-        // mean-of-neighbours step it replaced: 0.958 / 0.956 / 0.951).
+        // Measured with the default 10 + 10 + 40 schedule and look-ahead 8: 96.6 / 94.5 / 94.2
+        // (fandisk, a CAD part without --feature-angle, seeds 1-4: 94.2 / 94.3 / 94.5 / 94.4).
+        double minV6;
+        // Issue 13: the relaxation down the shape energy; measured 0.962 / 0.962 / 0.951 (with
+        // the paper's schedule 0.965 / 0.965 / 0.958, where the mean-of-neighbours step it
+        // replaced gave 0.958 / 0.956 / 0.951).
         double minQAvg;
     };
-    for (const Case& c : {Case{"torus.obj", 1000, 94.2, 0.962}, Case{"fertility.off", 3000, 94.2, 0.962},
-                          Case{"fandisk.off", 5000, 93.9, 0.955}}) {
+    for (const Case& c : {Case{"torus.obj", 1000, 95.0, 0.960}, Case{"fertility.off", 3000, 94.2, 0.960},
+                          Case{"fandisk.off", 5000, 94.0, 0.950}}) {
         SCOPED_TRACE(c.file);
         RemeshParams params;
         params.vertexCount = c.vertices;

@@ -22,7 +22,8 @@ name = os.path.splitext(os.path.basename(source))[0]
 out = os.path.join(work, f"{name}_{vertices}.ply")
 report_path = os.path.join(work, f"{name}_{vertices}.json")
 
-cvt = ["--lambda", "0", "--cvt-iterations", "130", "--fcvt-iterations", "0", "--no-valence"] if pure_cvt else []
+cvt = ["--lambda", "0", "--lloyd-iterations", "30", "--cvt-iterations", "130", "--fcvt-iterations", "0",
+       "--no-valence"] if pure_cvt else []
 print(run_ok([fcvt, "remesh", source, out, "--vertices", str(vertices), "--report", report_path] + cvt + extra))
 with open(report_path) as f:
     report = json.load(f)
