@@ -8,11 +8,13 @@
 #include "metrics.h"
 
 #include <Eigen/Geometry>
+#include <omp.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -240,6 +242,11 @@ private:
     //! Look-ahead (when no single operation is left): chains that start with an R-neutral flip
     //! around v, see collectChains.
     void collectChains(int v, std::vector<Candidate>& out);
+    //! collectChains for every irregular vertex, appended to `out` in vertex order. In parallel:
+    //! the search applies operations tentatively and rolls them back, so each thread but the
+    //! first searches on its own copy of the mesh; every vertex's search starts from the same
+    //! state, so the list is the one a single thread makes.
+    void collectAllChains(std::vector<Candidate>& out);
     //! One level of the chain search: each R-neutral flip at the irregular vertices of `from`,
     //! applied tentatively, then either the best R-lowering operation around it ends the chain or,
     //! if there is none and the depth allows, the search goes on from the flipped quad.
@@ -763,6 +770,29 @@ void ValenceOptimizer::collectChains(int v, std::vector<Candidate>& out)
     // a flip, collapse or split annihilates both. Depth-first, bounded by lookAheadDepth.
     Candidate chain;
     extendChain({v}, chain, out);
+}
+
+void ValenceOptimizer::collectAllChains(std::vector<Candidate>& out)
+{
+    std::vector<int> irregular;
+    for (int v = 0; v < static_cast<int>(pos_.size()); ++v)
+        if (vertexAlive_[v] && manifold_[v] && valence_[v] != target(v)) irregular.push_back(v);
+    std::vector<std::vector<Candidate>> found(irregular.size());
+    // Copying the state costs about one search of a few dozen vertices: not for small lists.
+    const bool parallel = omp_get_max_threads() > 1 && irregular.size() >= 64;
+#pragma omp parallel if (parallel)
+    {
+        std::unique_ptr<ValenceOptimizer> copy;
+        if (omp_get_thread_num() > 0) copy = std::make_unique<ValenceOptimizer>(*this);
+        ValenceOptimizer& self = copy ? *copy : *this;
+#pragma omp barrier
+        // (no thread changes the mesh before every copy is made)
+#pragma omp for schedule(dynamic, 4)
+        for (long long k = 0; k < static_cast<long long>(irregular.size()); ++k)
+            self.collectChains(irregular[size_t(k)], found[size_t(k)]);
+    }
+    for (std::vector<Candidate>& list : found)
+        for (Candidate& c : list) out.push_back(std::move(c));
 }
 
 void ValenceOptimizer::extendChain(const std::vector<int>& from, Candidate& chain, std::vector<Candidate>& out)
@@ -1406,15 +1436,12 @@ ValenceStats ValenceOptimizer::run()
         for (int pass = 0; pass < (params_.lookAheadDepth >= 2 ? 2 : 1) && applied == 0; ++pass) {
             const int n = static_cast<int>(pos_.size());
             candidates.clear();
-            for (int v = 0; v < n; ++v) {
+            if (pass == 1) collectAllChains(candidates);
+            for (int v = 0; v < n && pass == 0; ++v) {
                 if (!vertexAlive_[v] || !manifold_[v] || valence_[v] == target(v)) continue;
-                if (pass == 0) {
-                    operations.clear();
-                    collectOperations(v, false, operations);
-                    for (const Op& op : operations) candidates.push_back(single(op));
-                } else {
-                    collectChains(v, candidates);
-                }
+                operations.clear();
+                collectOperations(v, false, operations);
+                for (const Op& op : operations) candidates.push_back(single(op));
             }
             std::sort(candidates.begin(), candidates.end());
             candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());

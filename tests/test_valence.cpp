@@ -430,7 +430,9 @@ TEST(Valence, FeatureLinesAndCornersAreKept)
 TEST(Valence, DeterministicWhateverTheThreadCount)
 {
     const TriMesh input = readMesh(testmesh::resource("torus.obj"));
-    const TriMesh start = remeshedWithoutValence(input, 400);
+    // Enough vertices that the look-ahead rounds have the 64 irregular vertices from which their
+    // chains are searched on several threads (collectAllChains).
+    const TriMesh start = remeshedWithoutValence(input, 1500);
     ClosestPointTree tree(input);
     // A field makes the final relaxation use it too.
     FieldParams fieldParams;
@@ -446,11 +448,13 @@ TEST(Valence, DeterministicWhateverTheThreadCount)
         omp_set_num_threads(previous);
         return mesh;
     };
-    const TriMesh a = run(1), b = run(1), c = run(2);
+    const TriMesh a = run(1), b = run(1), c = run(2), d = run(3);
     EXPECT_EQ(a.vertices, b.vertices);
     EXPECT_EQ(a.faces, b.faces);
     EXPECT_EQ(a.vertices, c.vertices);
     EXPECT_EQ(a.faces, c.faces);
+    EXPECT_EQ(a.vertices, d.vertices);
+    EXPECT_EQ(a.faces, d.faces);
 }
 
 TEST(Valence, RejectsMismatchedRoles)
