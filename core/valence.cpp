@@ -219,6 +219,9 @@ private:
     //! Largest distance from face f's centroid and edge midpoints to the input surface: large
     //! where the face cuts across a crease or a thin part of the input.
     double faceSag(int f) const;
+    //! The points whose distance to the input makes face f's sag, and for each the face its
+    //! query starts from (shared by faceSag and faceSagBound).
+    void sagPoints(int f, Vec3 (&points)[4], int (&starts)[4]) const;
     //! At least faceSag(f), from walks over the input (SurfaceWalk) instead of tree queries;
     //! usually equal to it.
     double faceSagBound(int f) const;
@@ -587,26 +590,35 @@ Vec3 ValenceOptimizer::surfaceNormal(const ClosestPoint& cp) const
     return length > 0 ? Vec3(n / length) : Vec3(Vec3::UnitZ());
 }
 
-double ValenceOptimizer::faceSag(int f) const
+void ValenceOptimizer::sagPoints(int f, Vec3 (&points)[4], int (&starts)[4]) const
 {
     // The centroid and the edge midpoints: an edge across a crease sags most at its middle.
     // The queries start from a corner's closest face (same answers, fewer tree nodes visited).
     const Face& t = faces_[f];
-    const Vec3 points[4] = {(pos_[t[0]] + pos_[t[1]] + pos_[t[2]]) / 3.0, 0.5 * (pos_[t[0]] + pos_[t[1]]),
-                            0.5 * (pos_[t[1]] + pos_[t[2]]), 0.5 * (pos_[t[2]] + pos_[t[0]])};
-    const int hints[4] = {closest_[t[0]].face, closest_[t[0]].face, closest_[t[1]].face, closest_[t[2]].face};
+    points[0] = (pos_[t[0]] + pos_[t[1]] + pos_[t[2]]) / 3.0;
+    points[1] = 0.5 * (pos_[t[0]] + pos_[t[1]]);
+    points[2] = 0.5 * (pos_[t[1]] + pos_[t[2]]);
+    points[3] = 0.5 * (pos_[t[2]] + pos_[t[0]]);
+    starts[0] = starts[1] = closest_[t[0]].face;
+    starts[2] = closest_[t[1]].face;
+    starts[3] = closest_[t[2]].face;
+}
+
+double ValenceOptimizer::faceSag(int f) const
+{
+    Vec3 points[4];
+    int starts[4];
+    sagPoints(f, points, starts);
     double sag = 0;
-    for (int k = 0; k < 4; ++k) sag = std::max(sag, (surface_.tree.closest(points[k], hints[k]).point - points[k]).norm());
+    for (int k = 0; k < 4; ++k) sag = std::max(sag, (surface_.tree.closest(points[k], starts[k]).point - points[k]).norm());
     return sag;
 }
 
 double ValenceOptimizer::faceSagBound(int f) const
 {
-    // The same points and starting faces as faceSag.
-    const Face& t = faces_[f];
-    const Vec3 points[4] = {(pos_[t[0]] + pos_[t[1]] + pos_[t[2]]) / 3.0, 0.5 * (pos_[t[0]] + pos_[t[1]]),
-                            0.5 * (pos_[t[1]] + pos_[t[2]]), 0.5 * (pos_[t[2]] + pos_[t[0]])};
-    const int starts[4] = {closest_[t[0]].face, closest_[t[0]].face, closest_[t[1]].face, closest_[t[2]].face};
+    Vec3 points[4];
+    int starts[4];
+    sagPoints(f, points, starts);
     double sag = 0;
     for (int k = 0; k < 4; ++k) sag = std::max(sag, walk_.distanceBound(points[k], starts[k]));
     return sag;
