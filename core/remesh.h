@@ -43,9 +43,10 @@ struct RemeshParams {
     //! evaluations instead of 163, ~0.6× the time): the valence optimisation (§4.4), not the last
     //! L-BFGS iterations, decides V6%, and with its look-ahead at 8 the short schedule keeps the
     //! quality bars. Measured over seeds 1–4 on the nine rows of bench/side_by_side.py (README:
-    //! the schedule): the lowest V6% per row at or above the paper schedule's on every row, d_H
-    //! within the seeds' spread, Q_avg 0.002–0.005 lower. Lloyd 5 instead of 10: nefertiti 10000
-    //! seed 3 kept a 26.7° triangle; fewer FCVT iterations (25, 30): fandisk 5000 V6 93.5–93.7 %.
+    //! the schedule): the lowest V6% per row at or above the paper schedule's on 8 of the 9 rows
+    //! (camelhead 94.1 against 94.5), d_H within the seeds' spread, Q_avg 0.002–0.005 lower.
+    //! Lloyd 5 instead of 10: nefertiti 10000 seed 3 kept a 26.7° triangle; fewer FCVT
+    //! iterations (25, 30): fandisk 5000 V6 93.5–93.7 %.
     int lloydIterations = 10;
     int cvtIterations = 10;   //!< L-BFGS iterations on E_CVT (see lloydIterations)
     int fcvtIterations = 40;  //!< then L-BFGS iterations on E_CVT + λ E_field (see lloydIterations)
