@@ -284,7 +284,8 @@ private:
     const ValenceSurface& surface_;
     const ValenceParams& params_;
     std::vector<Vec3> inputNormals_;  //!< area-weighted vertex normals of the input
-    SurfaceWalk walk_;                //!< distance bounds on the input (faceSagBound)
+    //! Distance bounds on the input (faceSagBound); shared by the copies collectAllChains makes.
+    std::shared_ptr<const SurfaceWalk> walk_;
     struct SagEntry {
         std::array<Vec3, 3> corners;
         double sag = -1;  //!< < 0: not measured
@@ -316,7 +317,7 @@ private:
 
 ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
                                    const ValenceParams& params)
-    : mesh_(mesh), roles_(roles), surface_(surface), params_(params), walk_(surface.input)
+    : mesh_(mesh), roles_(roles), surface_(surface), params_(params), walk_(std::make_shared<const SurfaceWalk>(surface.input))
 {
     const int n = mesh.vertexCount();
     for (const Face& f : mesh.faces)
@@ -620,7 +621,7 @@ double ValenceOptimizer::faceSagBound(int f) const
     int starts[4];
     sagPoints(f, points, starts);
     double sag = 0;
-    for (int k = 0; k < 4; ++k) sag = std::max(sag, walk_.distanceBound(points[k], starts[k]));
+    for (int k = 0; k < 4; ++k) sag = std::max(sag, walk_->distanceBound(points[k], starts[k]));
     return sag;
 }
 
