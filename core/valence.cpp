@@ -317,7 +317,8 @@ private:
 
 ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
                                    const ValenceParams& params)
-    : mesh_(mesh), roles_(roles), surface_(surface), params_(params), walk_(std::make_shared<const SurfaceWalk>(surface.input))
+    : mesh_(mesh), roles_(roles), surface_(surface), params_(params),
+      walk_(std::make_shared<const SurfaceWalk>(surface.input))
 {
     const int n = mesh.vertexCount();
     for (const Face& f : mesh.faces)
@@ -1104,8 +1105,8 @@ bool ValenceOptimizer::tryApply(const Candidate& cand, std::vector<int>& changed
         const bool sharper = angleAfter < minAngle && angleAfter < angleBefore - 1e-9;
         // A flip or collapse across a crease cuts it (d_H): refused like a fold (measured last,
         // the costliest test).
-        const double sagLimit =
-            std::max(std::min(kOperationSagGrowth * sagBefore, sagBefore + kOperationSagStep * edgeLength_), kMaxSag * edgeLength_);
+        const double grown = std::min(kOperationSagGrowth * sagBefore, sagBefore + kOperationSagStep * edgeLength_);
+        const double sagLimit = std::max(grown, kMaxSag * edgeLength_);
         ok = !folded && !sharper && angleAfter > 0 && !sagExceeds(faces, sagLimit);
     }
     if (!ok) {

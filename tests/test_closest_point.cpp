@@ -199,7 +199,8 @@ WalkCounts walkFromNeighbourhood(const TriMesh& mesh, double offset, std::uint64
         const Vec3 centroid = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
         const double edge = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).norm();
         // Up to about two faces away from f along the surface, a little off it.
-        const Vec3 normal = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).normalized();
+        const Vec3 ab = mesh.vertices[t[1]] - mesh.vertices[t[0]], ac = mesh.vertices[t[2]] - mesh.vertices[t[0]];
+        const Vec3 normal = ab.cross(ac).normalized();
         Vec3 along(u(rng), u(rng), u(rng));
         along -= along.dot(normal) * normal;
         const Vec3 p = centroid + 1.5 * edge * along + offset * edge * u(rng) * normal;
