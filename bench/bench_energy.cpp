@@ -316,9 +316,7 @@ void BM_RemeshBunny5000(benchmark::State& state)
     params.vertexCount = 5000;
     params.threads = static_cast<int>(state.range(0));
     if (state.range(1) == 1) {
-        params.lloydIterations = 30;
-        params.cvtIterations = 65;
-        params.fcvtIterations = 65;
+        usePaperSchedule(params);
         params.valence.lookAheadDepth = 6;
     }
     params.computeDistances = false;

@@ -142,6 +142,15 @@ struct RemeshResult {
     int optimisationFaces = 0;
 };
 
+//! The paper's fixed schedule (§5: 65 L-BFGS iterations on E_CVT, then 65 with E_field) after
+//! the 30 Lloyd steps FCVT ran before the short default (RemeshParams::lloydIterations).
+inline void usePaperSchedule(RemeshParams& params)
+{
+    params.lloydIterations = 30;
+    params.cvtIterations = 65;
+    params.fcvtIterations = 65;
+}
+
 //! Remeshes `input` (validated first; throws InvalidInputError with a clear message).
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress = {});
 

@@ -158,9 +158,7 @@ TEST(Remesh, FieldAlignmentMakesTheCylinderMoreRegularThanCvt)
     cvt.fcvtIterations = 0;
     cvt.valenceOptimization = false;  // the energies alone, as in Fig. 7
     RemeshParams fcvt;
-    fcvt.lloydIterations = 30;
-    fcvt.cvtIterations = 65;
-    fcvt.fcvtIterations = 65;
+    usePaperSchedule(fcvt);
     fcvt.vertexCount = 500;
     fcvt.valenceOptimization = false;
     fcvt.fieldSource = FieldSource::CurvatureMax;
