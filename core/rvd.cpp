@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -114,6 +115,7 @@ struct Polygon {
 
 constexpr int kTrianglesPerChunk = 256;  // fixed, so results do not depend on the thread count
 constexpr int kStoredNeighbours = 12;    // per seed: covers the security radius almost always (measured: 12 ~ 20, faster)
+constexpr int kMaxMovers = 32;           // seeds checked against every candidate list (movers)
 constexpr int kCandidates = 36;          // per seed in the candidate lists (twice the stored neighbours)
 
 // Integrals over the part of one cell in consecutive triangles of a chunk.
@@ -241,6 +243,13 @@ struct RestrictedVoronoiDiagram::Impl {
     double candidateMargin = 0;            // median of (candidate radius - stored radius) at the build
     int candidateCount = 0;
     bool rebuildCandidates = true;
+    // The few seeds that moved most since the candidate lists were found ("movers", at most
+    // kMaxMovers): every list is checked against them explicitly, so that the drift bound
+    // (`drift` of listFromCandidates) is the largest move of the others. One L-BFGS step that
+    // sends a handful of seeds far used to invalidate every list (bunny 5000: a rebuild every
+    // 3-4 evaluations, each ~10 ms on one thread, most triggered by 1-6 seeds).
+    std::vector<uint32_t> movers;
+    std::vector<double> moveSquared, moveOrder;  // per seed, work space
 
     void buildPieces(RvdResult& result) const;
 
@@ -323,10 +332,19 @@ struct RestrictedVoronoiDiagram::Impl {
             sorted[r] = entry;
         }
         for (int q = 0; q < candidateCount; ++q) cand[q] = sorted[q].second;
-        // Complete up to the radius less both moves; a rounding margin keeps the test strict.
+        // Complete up to the radius less both moves (`drift` bounds every seed's but the
+        // movers'); a rounding margin keeps the test strict.
         const double complete = candidateRadius[i] - drift - (xi - candidatePosition[i]).norm();
         const double last = sorted[storedNeighbours - 1].first;
         if (!(complete > 0 && last < complete * complete * (1 - 1e-9) && sorted[0].first > 0)) return false;
+        // A mover that is now among the nearest must be one of them already (else the list is
+        // incomplete: the k-d tree decides). The rounding margin errs towards that check.
+        for (uint32_t j : movers) {
+            if (static_cast<int>(j) == i || ((*seeds)[j] - xi).squaredNorm() > last * (1 + 1e-9)) continue;
+            bool listed = false;
+            for (int q = 0; q < storedNeighbours && !listed; ++q) listed = sorted[q].second == j;
+            if (!listed) return false;
+        }
         for (int q = 0; q < storedNeighbours; ++q) listIndex[q] = sorted[q].second, listDist2[q] = sorted[q].first;
         return true;
     }
@@ -354,10 +372,21 @@ struct RestrictedVoronoiDiagram::Impl {
         bool useCandidates = !rebuildCandidates && candidates0 == candidateCount && candidatePosition.size() == size_t(n) &&
                              storedNeighbours > 0;
         double drift = 0;
+        movers.clear();
         if (useCandidates) {
-#pragma omp parallel for schedule(static) reduction(max : drift)
-            for (int i = 0; i < n; ++i) drift = std::max(drift, ((*seeds)[i] - candidatePosition[i]).squaredNorm());
-            drift = std::sqrt(drift);
+            moveSquared.resize(n);
+#pragma omp parallel for schedule(static)
+            for (int i = 0; i < n; ++i) moveSquared[i] = ((*seeds)[i] - candidatePosition[i]).squaredNorm();
+            // drift: the (kMaxMovers + 1)-th largest move; the seeds that moved farther are the movers.
+            double drift2 = 0;
+            if (n > kMaxMovers) {
+                moveOrder = moveSquared;
+                std::nth_element(moveOrder.begin(), moveOrder.begin() + kMaxMovers, moveOrder.end(), std::greater<double>());
+                drift2 = moveOrder[kMaxMovers];
+            }
+            for (int i = 0; i < n; ++i)
+                if (moveSquared[i] > drift2) movers.push_back(static_cast<uint32_t>(i));
+            drift = std::sqrt(drift2);
             // Most lists would fail their test: find new ones now.
             useCandidates = 3 * drift < candidateMargin;
         }
