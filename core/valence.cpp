@@ -69,6 +69,16 @@ constexpr double kRelaxSagGrowth = 1.25;
 //! growth); growth 1.0× or 1.2× instead of 1.5×: fandisk V6 91.1 / 92.7 %.
 constexpr double kOperationSagStep = 0.1;
 
+//! The angle repair after the relaxation (raiseSmallestAngles): rounds over the corners of the
+//! faces still under ValenceParams::minAngleDegrees; per corner, a pattern search (8 tangent
+//! directions, first step kAngleRepairStep mean edge lengths, halved down to 1/32 of it) for
+//! the position on the surface with the largest smallest angle over its faces, within
+//! kAngleRepairDrift edges of where it was, without folding or sagging more than the
+//! relaxation allows.
+constexpr int kAngleRepairRounds = 3;
+constexpr double kAngleRepairStep = 0.1;
+constexpr double kAngleRepairDrift = 0.3;
+
 //! Also the tie-break between candidates of equal gain: splits before collapses keeps the vertex
 //! count near the target (fertility 3000: 2960 vertices with collapses first, 2993 this way).
 enum class OpType : std::uint8_t { Flip = 0, Split = 1, Collapse = 2, None = 3 };
@@ -275,6 +285,13 @@ private:
 
     // --- final relaxation and output --------------------------------------------------------
     void relax();
+    //! After the relaxation: the corners of the faces that still have an angle under
+    //! ValenceParams::minAngleDegrees move (on the surface) to raise the smallest angle of their
+    //! incident faces (see kAngleRepairRounds).
+    void raiseSmallestAngles();
+    //! One vertex of raiseSmallestAngles: a pattern search in its tangent plane; returns whether
+    //! it moved.
+    bool raiseAnglesAround(int v, double maxSag);
     long long irregularity() const;
     double meanFieldDistance();
     void compact();
@@ -1349,6 +1366,69 @@ void ValenceOptimizer::relax()
     }
 }
 
+void ValenceOptimizer::raiseSmallestAngles()
+{
+    const double minAngle = params_.minAngleDegrees * kPi / 180.0;
+    const double maxSag = kMaxSag * edgeLength_;
+    std::vector<int> verts;
+    for (int round = 0; round < kAngleRepairRounds; ++round) {
+        verts.clear();
+        for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
+            if (!faceAlive_[f]) continue;
+            const Face& t = faces_[f];
+            if (smallestAngle(pos_[t[0]], pos_[t[1]], pos_[t[2]]) < minAngle) verts.insert(verts.end(), t.begin(), t.end());
+        }
+        if (verts.empty()) return;
+        std::sort(verts.begin(), verts.end());
+        verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+        bool moved = false;
+        for (int v : verts) moved = raiseAnglesAround(v, maxSag) || moved;  // Gauss–Seidel, index order
+        if (!moved) return;
+    }
+}
+
+bool ValenceOptimizer::raiseAnglesAround(int v, double maxSag)
+{
+    if (!vertexAlive_[v] || role_[v] != VertexRole::Free || vertexFaces_[v].empty() || !manifold_[v]) return false;
+    const std::vector<int>& faces = vertexFaces_[v];
+    double angleBefore, dotBefore;
+    localShape(faces, angleBefore, dotBefore);
+    double sagBefore = 0;
+    for (int f : faces) sagBefore = std::max(sagBefore, cachedFaceSag(f));
+    const double sagLimit = std::max(kRelaxSagGrowth * sagBefore, maxSag);
+    const double minDot = std::min(kMinNormalDot, dotBefore);
+    // Tangent directions at v: 8 around its normal.
+    const Vec3 n = normal_[v];
+    const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+    const Vec3 t2 = n.cross(t1);
+    const Vec3 start = pos_[v];
+    const ClosestPoint startClosest = closest_[v];
+    double best = angleBefore;
+    Vec3 bestPos = start;
+    ClosestPoint bestClosest = startClosest;
+    for (double step = kAngleRepairStep * edgeLength_; step > kAngleRepairStep * edgeLength_ / 32;) {
+        const Vec3 centre = bestPos;
+        const ClosestPoint centreClosest = bestClosest;
+        bool improved = false;
+        for (int k = 0; k < 8; ++k) {
+            const double phi = k * kPi / 4;
+            const Vec3 q = centre + step * (std::cos(phi) * t1 + std::sin(phi) * t2);
+            const ClosestPoint cp = surface_.tree.closest(q, centreClosest.face);
+            if ((cp.point - start).norm() > kAngleRepairDrift * edgeLength_) continue;
+            setPosition(v, cp.point, cp);
+            double angle, dot;
+            localShape(faces, angle, dot);
+            if (angle > best + 1e-9 && dot >= minDot && !sagExceeds(faces, sagLimit)) {
+                best = angle, bestPos = cp.point, bestClosest = cp;
+                improved = true;
+            }
+        }
+        setPosition(v, bestPos, bestClosest);
+        if (!improved) step *= 0.5;
+    }
+    return bestPos != start;
+}
+
 long long ValenceOptimizer::irregularity() const
 {
     long long sum = 0;
@@ -1467,6 +1547,7 @@ ValenceStats ValenceOptimizer::run()
     stats_.irregularityAfter = irregularity();
     stats_.fieldDistanceOperations = meanFieldDistance();
     relax();
+    raiseSmallestAngles();
     stats_.fieldDistanceAfter = meanFieldDistance();
     compact();
     stats_.v6After = computeQuality(mesh_).v6Pct;
