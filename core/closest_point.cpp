@@ -409,6 +409,12 @@ SurfaceWalk::SurfaceWalk(const TriMesh& mesh) : mesh_(mesh), across_(3 * mesh.fa
 
 double SurfaceWalk::distanceBound(const Vec3& p, int startFace) const
 {
+    int endFace = startFace;
+    return distanceBound(p, startFace, endFace);
+}
+
+double SurfaceWalk::distanceBound(const Vec3& p, int startFace, int& endFace) const
+{
     if (startFace < 0 || startFace >= mesh_.faceCount()) return kInfinity;
     // A few steps reach the answer from a face a sample spacing away; more would only cost.
     constexpr int kMaxSteps = 8;
@@ -447,6 +453,7 @@ double SurfaceWalk::distanceBound(const Vec3& p, int startFace) const
         previous = face;
         face = next;
     }
+    endFace = face;
     return std::sqrt(best2);
 }
 

@@ -56,6 +56,9 @@ public:
     //! A distance from p to the mesh that is at least the exact one; +infinity when `startFace`
     //! is out of range. Thread-safe.
     double distanceBound(const Vec3& p, int startFace) const;
+    //! The same, and the face the walk ended on in `endFace` (unchanged when `startFace` is out
+    //! of range): the start for the next query of a point that moved a little.
+    double distanceBound(const Vec3& p, int startFace, int& endFace) const;
 
 private:
     const TriMesh& mesh_;

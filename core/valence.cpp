@@ -235,6 +235,9 @@ private:
     //! At least faceSag(f), from walks over the input (SurfaceWalk) instead of tree queries;
     //! usually equal to it.
     double faceSagBound(int f) const;
+    //! The same from the given start faces, one per sag point (-1: faceSagBound's), which receive
+    //! the faces the walks ended on.
+    double faceSagBound(int f, std::array<int, 4>& starts) const;
     //! faceSag(f), remembered with f's corner positions: an operation's check measures the faces
     //! around it before, and most of them were measured by an earlier check and have not moved.
     double cachedFaceSag(int f);
@@ -640,6 +643,19 @@ double ValenceOptimizer::faceSagBound(int f) const
     sagPoints(f, points, starts);
     double sag = 0;
     for (int k = 0; k < 4; ++k) sag = std::max(sag, walk_->distanceBound(points[k], starts[k]));
+    return sag;
+}
+
+double ValenceOptimizer::faceSagBound(int f, std::array<int, 4>& starts) const
+{
+    Vec3 points[4];
+    int defaultStarts[4];
+    sagPoints(f, points, defaultStarts);
+    double sag = 0;
+    for (int k = 0; k < 4; ++k) {
+        if (starts[k] < 0) starts[k] = defaultStarts[k];
+        sag = std::max(sag, walk_->distanceBound(points[k], starts[k], starts[k]));
+    }
     return sag;
 }
 
@@ -1218,6 +1234,9 @@ void ValenceOptimizer::relax()
     // corners then.
     std::vector<double> sagMeasured(faceSagStart);
     std::vector<std::array<Vec3, 3>> sagCorners(faces_.size());
+    // Per face, where the walks of its sag points ended last time: the next walks start there
+    // (the bound may differ with the start, the answers do not: the tree decides above it).
+    std::vector<std::array<int, 4>> sagWalkStarts(faces_.size(), {-1, -1, -1, -1});
     for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
         if (faceAlive_[f]) sagCorners[f] = {pos_[faces_[f][0]], pos_[faces_[f][1]], pos_[faces_[f][2]]};
     auto sagExceeds = [&](int f, double limit) {
@@ -1231,7 +1250,7 @@ void ValenceOptimizer::relax()
         sagCorners[f] = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
         // A walk's bound under the limit answers as well (the exact sag is at most the bound),
         // at a fraction of the tree queries' cost; the bound serves the Lipschitz test above.
-        sagMeasured[f] = faceSagBound(f);
+        sagMeasured[f] = faceSagBound(f, sagWalkStarts[f]);
         if (sagMeasured[f] <= limit) return false;
         sagMeasured[f] = faceSag(f);
         return sagMeasured[f] > limit;
