@@ -415,29 +415,45 @@ double SurfaceWalk::distanceBound(const Vec3& p, int startFace) const
 
 double SurfaceWalk::distanceBound(const Vec3& p, int startFace, int& endFace) const
 {
-    if (startFace < 0 || startFace >= mesh_.faceCount()) return kInfinity;
+    const ClosestPoint local = closestFrom(p, startFace);
+    if (local.face < 0) return kInfinity;
+    endFace = local.face;
+    return std::sqrt(local.squaredDistance);
+}
+
+ClosestPoint SurfaceWalk::closestFrom(const Vec3& p, int startFace, bool* settled) const
+{
+    ClosestPoint result;
+    result.point = p;
+    result.barycentric.setZero();
+    result.squaredDistance = kInfinity;
+    if (settled) *settled = false;
+    if (startFace < 0 || startFace >= mesh_.faceCount()) return result;
     // A few steps reach the answer from a face a sample spacing away; more would only cost.
     constexpr int kMaxSteps = 8;
-    auto distance2 = [&](int f, Vec3& bary) {
+    auto distance2 = [&](int f, Vec3& bary, Vec3& point) {
         const Face& t = mesh_.faces[f];
-        Vec3 point;
         return closestOnTriangle(p, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]], point, bary);
     };
-    Vec3 bary;
+    Vec3 bary, point;
     int face = startFace, previous = -1;
-    double best2 = distance2(face, bary);
+    double best2 = distance2(face, bary, point);
+    bool stopped = false;
     for (int step = 0; step < kMaxSteps; ++step) {
         // On the edge opposite a zero barycentric coordinate the face across it may hold a
         // nearer point; on a corner (two zeros), any face around that vertex.
         const int zeros = (bary[0] == 0.0) + (bary[1] == 0.0) + (bary[2] == 0.0);
-        if (zeros == 0) break;  // inside the face: the nearest point of its neighbourhood
+        if (zeros == 0) {  // inside the face: the nearest point of its neighbourhood
+            stopped = true;
+            break;
+        }
         int next = -1;
         double next2 = best2;
-        Vec3 nextBary, candidateBary;
+        Vec3 nextBary, nextPoint, candidateBary, candidatePoint;
         auto consider = [&](int g) {
             if (g < 0 || g == face || g == previous) return;
-            const double d2 = distance2(g, candidateBary);
-            if (d2 < next2) next = g, next2 = d2, nextBary = candidateBary;
+            const double d2 = distance2(g, candidateBary, candidatePoint);
+            if (d2 < next2) next = g, next2 = d2, nextBary = candidateBary, nextPoint = candidatePoint;
         };
         if (zeros == 1) {
             for (int k = 0; k < 3; ++k)
@@ -447,14 +463,23 @@ double SurfaceWalk::distanceBound(const Vec3& p, int startFace, int& endFace) co
             const int v = mesh_.faces[face][corner];
             for (int k = fanFirst_[v]; k < fanFirst_[v + 1]; ++k) consider(fan_[k]);
         }
-        if (next < 0) break;
+        if (next < 0) {  // no neighbour is nearer: a local minimum on an edge or a corner
+            stopped = true;
+            break;
+        }
         best2 = next2;
         bary = nextBary;
+        point = nextPoint;
         previous = face;
         face = next;
     }
-    endFace = face;
-    return std::sqrt(best2);
+    if (!(best2 == best2)) return result;  // NaN query
+    result.point = point;
+    result.face = face;
+    result.barycentric = bary;
+    result.squaredDistance = best2;
+    if (settled) *settled = stopped;
+    return result;
 }
 
 }  // namespace fieldcvt

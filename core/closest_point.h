@@ -59,6 +59,10 @@ public:
     //! The same, and the face the walk ended on in `endFace` (unchanged when `startFace` is out
     //! of range): the start for the next query of a point that moved a little.
     double distanceBound(const Vec3& p, int startFace, int& endFace) const;
+    //! The walk's answer itself: the nearest point of the last face reached (face -1 when
+    //! `startFace` is out of range or p is not finite). `settled` (if given) tells whether the
+    //! walk stopped at a local minimum (no neighbouring face nearer) rather than at its step limit.
+    ClosestPoint closestFrom(const Vec3& p, int startFace, bool* settled = nullptr) const;
 
 private:
     const TriMesh& mesh_;

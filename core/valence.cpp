@@ -1327,7 +1327,13 @@ void ValenceOptimizer::relax()
             if (length > maxStep) u *= maxStep / length;
             const Vec3 q = pos_[v] + u;
             if (role_[v] == VertexRole::Free) {
-                const ClosestPoint cp = surface_.tree.closest(q, closest_[v].face);
+                // A short walk over the input from the vertex's face (a step moves it by at
+                // most a quarter edge): the nearest point of the surface around it, which is
+                // the closest point but where another sheet of the surface comes nearer;
+                // the tree where the walk does not settle within its steps.
+                bool settled = false;
+                ClosestPoint cp = walk_->closestFrom(q, closest_[v].face, &settled);
+                if (!settled) cp = surface_.tree.closest(q, closest_[v].face);
                 // The relaxation only evens the mesh out: a vertex drifting far from where it
                 // started can slide off ridges and tips that it covered (camelhead's lips, with
                 // the earlier mean-of-neighbours step: d_H 0.74 -> 1.57 %), so it stops at

@@ -184,7 +184,7 @@ TEST(ClosestPointTree, EmptyMeshAndBadIndices)
 // SurfaceWalk: starts a sample spacing away from the answer, as the valence stage's sag checks
 // do (a corner's closest face for an edge midpoint or a face centroid).
 struct WalkCounts {
-    int queries = 0, exact = 0, startExact = 0;  //!< startExact: the start face holds the answer
+    int queries = 0, exact = 0, settled = 0, startExact = 0;  //!< startExact: the start face holds the answer
 };
 
 WalkCounts walkFromNeighbourhood(const TriMesh& mesh, double offset, std::uint64_t seed)
@@ -208,8 +208,22 @@ WalkCounts walkFromNeighbourhood(const TriMesh& mesh, double offset, std::uint64
         const double exactDistance = (exact.point - p).norm();
         const double bound = walk.distanceBound(p, f);
         EXPECT_GE(bound, exactDistance) << "face " << f;  // never below the exact distance
+        // closestFrom is the same walk's point: on its face, at the bound's distance, and where
+        // it settled at the tree's distance it is the tree's point (on a shared edge or corner
+        // the face may be the other one: the tree takes the lowest index).
+        bool settled = false;
+        const ClosestPoint local = walk.closestFrom(p, f, &settled);
+        EXPECT_EQ((local.point - p).norm(), bound) << "face " << f;
+        EXPECT_EQ(local.squaredDistance, (local.point - p).squaredNorm()) << "face " << f;
+        const Face& g = mesh.faces[local.face];
+        const Vec3 fromBarycentric = local.barycentric[0] * mesh.vertices[g[0]] + local.barycentric[1] * mesh.vertices[g[1]] +
+                                     local.barycentric[2] * mesh.vertices[g[2]];
+        EXPECT_LT((fromBarycentric - local.point).norm(), 1e-12 * (1 + p.norm())) << "face " << f;
+        if (settled && bound == exactDistance)
+            EXPECT_LT((local.point - exact.point).norm(), 1e-12 * (1 + p.norm())) << "face " << f;
         ++counts.queries;
         counts.exact += bound == exactDistance;
+        counts.settled += settled;
         counts.startExact += exact.face == f;
     }
     return counts;
@@ -223,6 +237,7 @@ TEST(SurfaceWalk, BoundsTheDistanceAndUsuallyEqualsIt)
         // start face holds the answer only for a few: the walk does the work.
         EXPECT_GE(near.exact, 0.97 * near.queries) << near.exact << " of " << near.queries;
         EXPECT_LE(near.startExact, 0.2 * near.queries);
+        EXPECT_GE(near.settled, 0.97 * near.queries);  // within its steps from two faces away
     }
 }
 
@@ -237,6 +252,9 @@ TEST(SurfaceWalk, StopsAtTheBorderAndRejectsBadStarts)
         EXPECT_GE(walk.distanceBound(p, f), (tree.closest(p).point - p).norm());
     }
     EXPECT_TRUE(std::isinf(walk.distanceBound(Vec3::Zero(), -1)));
+    bool settled = true;
+    EXPECT_EQ(walk.closestFrom(Vec3::Zero(), -1, &settled).face, -1);
+    EXPECT_FALSE(settled);
     EXPECT_TRUE(std::isinf(walk.distanceBound(Vec3::Zero(), grid.faceCount())));
 }
 
