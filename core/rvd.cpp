@@ -182,6 +182,7 @@ struct Scratch {
     std::vector<int> visited;
     std::vector<uint32_t> extraIndex;
     std::vector<double> extraDist;
+    std::vector<uint32_t> atCovered;  // clipToCell: the seeds visited at the largest distance so far
 };
 
 
@@ -249,6 +250,11 @@ struct RestrictedVoronoiDiagram::Impl {
     // sends a handful of seeds far used to invalidate every list (bunny 5000: a rebuild every
     // 3-4 evaluations, each ~10 ms on one thread, most triggered by 1-6 seeds).
     std::vector<uint32_t> movers;
+    // Per seed: its candidate list (candidateIndex) is, in this evaluation, sorted by distance
+    // and complete below this squared distance (every seed nearer is in it); 0 = not known.
+    // Where the stored neighbours do not reach a security radius, the candidates beyond them
+    // serve before the k-d tree (which is then not built in most evaluations).
+    std::vector<double> certifiedRadius2;
     std::vector<double> moveSquared, moveOrder;  // per seed, work space
 
     void buildPieces(RvdResult& result) const;
@@ -321,7 +327,7 @@ struct RestrictedVoronoiDiagram::Impl {
     // (nearly sorted next time, so the insertion sort does little work). `drift` is the largest
     // move of any seed since the lists were found. False: moved too far, or a coincident seed.
     bool listFromCandidates(int i, double drift, std::vector<std::pair<double, uint32_t>>& sorted, uint32_t* listIndex,
-                            double* listDist2)
+                            double* listDist2, double& certified2)
     {
         const Vec3& xi = (*seeds)[i];
         uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
@@ -339,13 +345,20 @@ struct RestrictedVoronoiDiagram::Impl {
         if (!(complete > 0 && last < complete * complete * (1 - 1e-9) && sorted[0].first > 0)) return false;
         // A mover that is now among the nearest must be one of them already (else the list is
         // incomplete: the k-d tree decides). The rounding margin errs towards that check.
+        // Beyond the stored ones the candidates are complete up to the radius, and to the
+        // nearest mover (which may be missing from them).
+        double certified = complete * complete * (1 - 1e-9);
         for (uint32_t j : movers) {
-            if (static_cast<int>(j) == i || ((*seeds)[j] - xi).squaredNorm() > last * (1 + 1e-9)) continue;
+            if (static_cast<int>(j) == i) continue;
+            const double dj = ((*seeds)[j] - xi).squaredNorm();
+            certified = std::min(certified, dj);
+            if (dj > last * (1 + 1e-9)) continue;
             bool listed = false;
             for (int q = 0; q < storedNeighbours && !listed; ++q) listed = sorted[q].second == j;
             if (!listed) return false;
         }
         for (int q = 0; q < storedNeighbours; ++q) listIndex[q] = sorted[q].second, listDist2[q] = sorted[q].first;
+        certified2 = certified;
         return true;
     }
 
@@ -402,6 +415,7 @@ struct RestrictedVoronoiDiagram::Impl {
             drift = 0;
         }
         long long failed = 0;
+        certifiedRadius2.assign(n, 0.0);
         std::vector<double> margins(buildCandidates ? n : 0, 0.0);
         const int k = (buildCandidates ? candidateCount : storedNeighbours) + 1;
 #pragma omp parallel reduction(+ : failed)
@@ -415,7 +429,7 @@ struct RestrictedVoronoiDiagram::Impl {
                 uint32_t* listIndex = neighbourIndex.data() + static_cast<size_t>(i) * storedNeighbours;
                 double* listDist2 = neighbourDist2.data() + static_cast<size_t>(i) * storedNeighbours;
                 if (useCandidates) {
-                    if (listFromCandidates(i, drift, sorted, listIndex, listDist2)) {
+                    if (listFromCandidates(i, drift, sorted, listIndex, listDist2, certifiedRadius2[i])) {
                         listDistinct[i] = 1;
                         continue;
                     }
@@ -442,6 +456,9 @@ struct RestrictedVoronoiDiagram::Impl {
                         if (static_cast<int>(idx[q]) != i) cand[c++] = idx[q];
                     for (; c < candidateCount; ++c) cand[c] = idx[found - 1];
                     candidateRadius[i] = found == static_cast<size_t>(k) ? std::sqrt(d2[found - 1]) : 0.0;
+                    // The k nearest (self included) were found: every seed nearer than the last
+                    // is among them.
+                    if (found == static_cast<size_t>(k)) certifiedRadius2[i] = d2[found - 1];
                 }
                 listDistinct[i] = found >= static_cast<size_t>(storedNeighbours + 1);
                 int stored = 0;
@@ -499,12 +516,32 @@ struct RestrictedVoronoiDiagram::Impl {
                 }
                 if (dp == best) tie = true;
             }
+            // The stored neighbours did not reach the security radius: the certified candidates.
+            if (next == current && !certified && certifiedRadius2[current] > 0) {
+                const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(current) * candidateCount;
+                const Vec3& xc = (*seeds)[current];
+                for (int q = storedNeighbours; q < candidateCount; ++q) {
+                    const double dq = ((*seeds)[cand[q]] - xc).squaredNorm();
+                    if (!(dq < certifiedRadius2[current])) break;
+                    if (dq > 4.0 * best) {
+                        certified = true;
+                        break;
+                    }
+                    if (duplicate[cand[q]]) continue;
+                    const double dp = ((*seeds)[cand[q]] - p).squaredNorm();
+                    if (dp < best) {
+                        best = dp, next = static_cast<int>(cand[q]);
+                        break;
+                    }
+                    if (dp == best) tie = true;
+                }
+            }
             if (next != current) {
                 current = next;
                 continue;
             }
             if (certified || storedNeighbours == n - 1) return tie ? -1 : current;
-            break;  // stored neighbours did not reach the security radius: ask the tree
+            break;  // the lists did not reach the security radius: ask the tree
         }
         uint32_t idx[2];
         double d2[2];
@@ -614,21 +651,42 @@ struct RestrictedVoronoiDiagram::Impl {
         const double* d2 = neighbourDist2.data() + static_cast<size_t>(i) * storedNeighbours;
         for (int q = 0; q < storedNeighbours; ++q)
             if (!visit(idx[q], d2[q])) return *current;
-        // Rare: the stored neighbours did not reach the security radius. Ask the tree for more.
+        // Rare: the stored neighbours did not reach the security radius. The candidates beyond
+        // them next (they continue the stored list, nearest first), as far as they are complete,
+        // then the k-d tree; each seed is visited once (`covered`: the largest distance visited,
+        // `atCovered`: the seeds visited at exactly that distance).
+        double covered = -1.0;
+        std::vector<uint32_t>& atCovered = scratch.atCovered;
+        atCovered.clear();
+        auto visitOnce = [&](uint32_t j, double dj) {
+            if (dj < covered || (dj == covered && std::find(atCovered.begin(), atCovered.end(), j) != atCovered.end()))
+                return true;  // visited already
+            if (!visit(j, dj)) return false;
+            if (dj > covered) covered = dj, atCovered.clear();
+            atCovered.push_back(j);
+            return true;
+        };
+        for (int q = 0; q < storedNeighbours; ++q) {  // the stored list, visited above (nearest first)
+            if (d2[q] > covered) covered = d2[q], atCovered.clear();
+            atCovered.push_back(idx[q]);
+        }
+        if (certifiedRadius2[i] > 0) {
+            const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
+            for (int q = storedNeighbours; q < candidateCount; ++q) {
+                const double dq = ((*seeds)[cand[q]] - xi).squaredNorm();
+                if (!(dq < certifiedRadius2[i])) break;
+                if (!visitOnce(cand[q], dq)) return *current;
+            }
+        }
         const size_t n = seeds->size();
         for (size_t k = 4 * static_cast<size_t>(storedNeighbours) + 1;; k *= 4) {
             k = std::min(k, n);
             scratch.extraIndex.resize(k);
             scratch.extraDist.resize(k);
             const size_t found = seedTree().knnSearch(xi.data(), k, scratch.extraIndex.data(), scratch.extraDist.data());
-            // Skip what the stored list covered: everything up to its last distance.
-            const double covered = storedNeighbours > 0 ? d2[storedNeighbours - 1] : -1.0;
             for (size_t q = 0; q < found; ++q) {
                 const uint32_t j = scratch.extraIndex[q];
-                if (static_cast<int>(j) == i || scratch.extraDist[q] < covered) continue;
-                if (scratch.extraDist[q] == covered && std::find(idx, idx + storedNeighbours, j) != idx + storedNeighbours)
-                    continue;
-                if (!visit(j, scratch.extraDist[q])) return *current;
+                if (static_cast<int>(j) != i && !visitOnce(j, scratch.extraDist[q])) return *current;
             }
             if (k == n) return *current;
         }

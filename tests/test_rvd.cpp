@@ -156,6 +156,27 @@ TEST(Rvd, WarmStartedNeighbourSearchGivesTheSameDiagram)
     for (size_t e = 0; e < a.edges.size(); ++e) EXPECT_EQ(a.edges[e].length, b.edges[e].length);
 }
 
+TEST(Rvd, EachNeighbourClipsAPolygonOnce)
+{
+    // Seeds on a short segment in one corner of a plane of two triangles: every cell is a strip
+    // across the plane, so no polygon's security radius is reached before all the other seeds
+    // (the stored neighbours, then the candidates, then the k-d tree in growing rounds) have
+    // clipped it. Each must clip it once: n - 1 clips per (cell, triangle), whatever the rounds
+    // (they used to repeat the seeds of the earlier round: 12 + 37 + 47 for n = 60).
+    const TriMesh plane = testmesh::planeGrid(1);
+    std::vector<Vec3> seeds;
+    for (int i = 0; i < 60; ++i) seeds.emplace_back(0.001 * i, 0.0004 * i + 0.001, 0.0);
+    const long long n = static_cast<long long>(seeds.size());
+    RestrictedVoronoiDiagram diagram(plane);
+    RvdResult result;
+    diagram.compute(seeds, RvdOptions{}, result);
+    double area = 0;
+    for (double m : result.mass) area += m;
+    EXPECT_NEAR(area, 1.0, 1e-12);
+    EXPECT_LE(result.clippedPolygons, 2 * n * (n - 1));
+    EXPECT_GE(result.clippedPolygons, n * (n - 1));  // every cell meets a triangle: the strips are clipped fully
+}
+
 TEST(Rvd, NeighbourListsFromCandidatesGiveTheSameDiagram)
 {
     // compute() takes most neighbour lists from the candidate lists of an earlier call while the
