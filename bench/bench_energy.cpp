@@ -92,6 +92,24 @@ void BM_EnergyEvaluationMovingSeedsBunny5000(benchmark::State& state)
 }
 BENCHMARK(BM_EnergyEvaluationMovingSeedsBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The evaluations of real L-BFGS iterations on E_CVT from the Lloyd-relaxed bunny samples (the
+// CVT stage's mix: most steps small, a few seeds jumping, line-search trials): what the RVD's
+// candidate lists, movers and fallbacks see in the pipeline, per evaluation.
+void BM_CvtLbfgsBunny5000(benchmark::State& state)
+{
+    const BunnySetup& setup = bunny5000();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    long long evaluations = 0;
+    for (auto _ : state) {
+        EnergyFunction energy(setup.surface);
+        std::vector<Vec3> seeds = setup.seeds;
+        minimizeLbfgs(energy, seeds, LbfgsParams{10});
+        evaluations += energy.evaluations();
+    }
+    state.counters["evaluations"] = double(evaluations) / double(state.iterations());  // per 10 iterations
+}
+BENCHMARK(BM_CvtLbfgsBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The RVD with its edges (the weights of E_field), as every FCVT evaluation needs it.
 void BM_RvdWithEdgesBunny5000(benchmark::State& state)
 {

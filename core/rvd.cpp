@@ -390,15 +390,23 @@ struct RestrictedVoronoiDiagram::Impl {
             moveSquared.resize(n);
 #pragma omp parallel for schedule(static)
             for (int i = 0; i < n; ++i) moveSquared[i] = ((*seeds)[i] - candidatePosition[i]).squaredNorm();
-            // drift: the (kMaxMovers + 1)-th largest move; the seeds that moved farther are the movers.
+            // The movers: the seeds that moved more than a sixth of the margin (a drift that
+            // leaves most lists valid), at most kMaxMovers of them, the farthest; drift: the
+            // largest move of the others. Usually there are none and no list pays for them.
+            const double moverMove2 = candidateMargin * candidateMargin / 36;
             double drift2 = 0;
-            if (n > kMaxMovers) {
+            int over = 0;
+            for (int i = 0; i < n; ++i) {
+                if (moveSquared[i] > moverMove2) ++over;
+                else drift2 = std::max(drift2, moveSquared[i]);
+            }
+            if (over > kMaxMovers) {  // the (kMaxMovers + 1)-th largest move bounds the others
                 moveOrder = moveSquared;
                 std::nth_element(moveOrder.begin(), moveOrder.begin() + kMaxMovers, moveOrder.end(), std::greater<double>());
                 drift2 = moveOrder[kMaxMovers];
             }
-            for (int i = 0; i < n; ++i)
-                if (moveSquared[i] > drift2) movers.push_back(static_cast<uint32_t>(i));
+            for (int i = 0; over > 0 && i < n; ++i)
+                if (moveSquared[i] > drift2 && moveSquared[i] > moverMove2) movers.push_back(static_cast<uint32_t>(i));
             drift = std::sqrt(drift2);
             // Most lists would fail their test: find new ones now.
             useCandidates = 3 * drift < candidateMargin;
