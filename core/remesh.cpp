@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <limits>
 #include <sstream>
 
@@ -238,20 +237,15 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         if (params.timeLimitSeconds > 0 && secondsSince(start) > params.timeLimitSeconds) throw TimeLimitReached();
     };
 
-    // The field runs on its own thread while the Lloyd and CVT iterations (which do not use it)
-    // run on the others: computing it hardly gains from a second core (bunny 5000: 0.066 s on
-    // one thread, 0.065 s on two), so it would leave one idle. It is single-threaded there and
-    // independent of the thread count, so the result is the same; joined before the FCVT stage.
-    std::future<double> fieldDone;  // the field's wall time
     if (useField) {
-        if (params.fieldSource == FieldSource::User && params.userDirections.size() != input.vertices.size())
-            throw InvalidInputError("the user field has " + std::to_string(params.userDirections.size()) +
-                                    " vectors for " + std::to_string(input.vertices.size()) + " vertices");
-        fieldDone = std::async(std::launch::async, [&] {
-            const auto fieldStart = Clock::now();
-            omp_set_num_threads(1);
+        pipeline.run("field", [&] {
+            stage = "field";
+            pipeline.report(stage, 2);
             if (params.fieldSource == FieldSource::User) {
                 std::vector<Vec3> vectors(optSurface.vertices.size(), Vec3::Zero());
+                if (params.userDirections.size() != input.vertices.size())
+                    throw InvalidInputError("the user field has " + std::to_string(params.userDirections.size()) +
+                                            " vectors for " + std::to_string(input.vertices.size()) + " vertices");
                 for (size_t v = 0; v < input.vertices.size(); ++v)
                     if (optIndex[v] >= 0) vectors[optIndex[v]] = params.userDirections[v];
                 field = fieldFromVectors(optSurface, vectors, params.seed);
@@ -265,12 +259,8 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             }
             result.singularities = findSingularities(optSurface, field);
             for (Singularity& s : result.singularities) s.position = frame.fromWork(s.position);
-            return secondsSince(fieldStart);
         });
     }
-    auto joinField = [&] {
-        if (fieldDone.valid()) result.stageTimes.push_back({"field", fieldDone.get()});  // rethrows its error
-    };
 
     std::vector<Vec3> seeds;
     std::vector<SampleConstraint> sampleRoles;
@@ -315,7 +305,6 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         });
         if (params.fcvtIterations > 0) {
             pipeline.run("fcvt", [&] {
-                joinField();
                 stage = "fcvt";
                 best = std::numeric_limits<double>::infinity();
                 energy.setField(useField ? &field : nullptr, &tree, params.lambda);
@@ -329,7 +318,6 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                 << ": the output is made from the best samples so far";
         result.warnings.push_back(message.str());
     }
-    joinField();  // when the time limit or a zero FCVT count skipped that stage
     if (reseededSamples > 0)
         result.warnings.push_back(std::to_string(reseededSamples) +
                                   " samples whose cells had emptied during the optimisation were re-seeded");
