@@ -498,7 +498,8 @@ struct RestrictedVoronoiDiagram::Impl {
 
     // The seed whose Voronoi cell contains point p, certified: a greedy walk over the neighbour
     // lists from `from`, then the security-radius test (no seed farther than 2|p - x_s| from
-    // x_s can be nearer to p). Falls back to the kd-tree when the stored list is too short or
+    // x_s can be nearer to p). Falls back to the kd-tree when the stored list and the certified
+    // candidates beyond it (certifiedRadius2) do not reach that radius or
     // the walk stalls (a greedy walk on a curved surface can stop at a local minimum).
     // Returns -1 when p is equidistant from two seeds (then its triangles are clipped).
     int certifiedNearestSeed(int from, const Vec3& p) const
@@ -511,37 +512,33 @@ struct RestrictedVoronoiDiagram::Impl {
             const double* d2 = neighbourDist2.data() + static_cast<size_t>(current) * storedNeighbours;
             int next = current;
             bool tie = false, certified = false;
-            for (int q = 0; q < storedNeighbours; ++q) {
-                if (next == current && d2[q] > 4.0 * best) {
+            // Seed j, a neighbour of `current` at squared distance dj (nearest first): false when
+            // the scan ends, at the security radius (certified) or at a seed nearer to p (the
+            // first improvement: move on from there).
+            auto scan = [&](uint32_t j, double dj) {
+                if (dj > 4.0 * best) {
                     certified = true;
-                    break;
+                    return false;
                 }
-                if (duplicate[idx[q]]) continue;
-                const double dp = ((*seeds)[idx[q]] - p).squaredNorm();
+                if (duplicate[j]) return true;
+                const double dp = ((*seeds)[j] - p).squaredNorm();
                 if (dp < best) {
-                    best = dp, next = static_cast<int>(idx[q]);
-                    break;  // first improvement: move on from there
+                    best = dp, next = static_cast<int>(j);
+                    return false;
                 }
                 if (dp == best) tie = true;
-            }
+                return true;
+            };
+            bool more = true;
+            for (int q = 0; q < storedNeighbours && more; ++q) more = scan(idx[q], d2[q]);
             // The stored neighbours did not reach the security radius: the certified candidates.
-            if (next == current && !certified && certifiedRadius2[current] > 0) {
+            if (more && certifiedRadius2[current] > 0) {
                 const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(current) * candidateCount;
                 const Vec3& xc = (*seeds)[current];
-                for (int q = storedNeighbours; q < candidateCount; ++q) {
+                for (int q = storedNeighbours; q < candidateCount && more; ++q) {
                     const double dq = ((*seeds)[cand[q]] - xc).squaredNorm();
                     if (!(dq < certifiedRadius2[current])) break;
-                    if (dq > 4.0 * best) {
-                        certified = true;
-                        break;
-                    }
-                    if (duplicate[cand[q]]) continue;
-                    const double dp = ((*seeds)[cand[q]] - p).squaredNorm();
-                    if (dp < best) {
-                        best = dp, next = static_cast<int>(cand[q]);
-                        break;
-                    }
-                    if (dp == best) tie = true;
+                    more = scan(cand[q], dq);
                 }
             }
             if (next != current) {
