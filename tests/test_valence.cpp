@@ -15,8 +15,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <set>
+#include <string>
 #include <utility>
 
 using namespace fieldcvt;
@@ -457,16 +459,22 @@ TEST(Valence, DeterministicWhateverTheThreadCount)
     EXPECT_EQ(a.faces, d.faces);
 }
 
+// The default pipeline on a bundled mesh, with one seed.
+RemeshResult remeshWithDefaults(const std::string& resource, int vertexCount, std::uint64_t seed)
+{
+    RemeshParams params;
+    params.vertexCount = vertexCount;
+    params.seed = seed;
+    return remesh(readMesh(testmesh::resource(resource)), params);
+}
+
 // An operation may grow the sag around it by at most 0.1 edge length on top of the 1.5× rule:
 // where the mesh already sags (an ear tip), a run of operations each within 1.5× cuts the tip
 // off. Measured, bunny 5000 with the defaults, d_H % of the diagonal, seeds 1-4: 0.62 / 0.68 /
 // 0.57 / 0.55 with the cap, 0.64 / 0.84 / 0.73 / 0.55 without it.
 TEST(Valence, SagGrowthCapKeepsBunnysEarTips)
 {
-    RemeshParams params;
-    params.vertexCount = 5000;
-    params.seed = 3;
-    const RemeshResult r = remesh(readMesh(testmesh::resource("bunny.obj")), params);
+    const RemeshResult r = remeshWithDefaults("bunny.obj", 5000, 3);
     EXPECT_LE(r.metrics.dH, 0.0065);
     EXPECT_GE(r.valence.v6After, 94.0);
 }
@@ -477,10 +485,7 @@ TEST(Valence, SagGrowthCapKeepsBunnysEarTips)
 // θ_min 35.4° with the repair, 32.1° without; the other figures unchanged (Q_avg 0.960, V6 94.2 %).
 TEST(Valence, AngleRepairLiftsTheSmallestAngle)
 {
-    RemeshParams params;
-    params.vertexCount = 3000;
-    params.seed = 4;
-    const RemeshResult r = remesh(readMesh(testmesh::resource("fertility.off")), params);
+    const RemeshResult r = remeshWithDefaults("fertility.off", 3000, 4);
     EXPECT_GE(r.metrics.thetaMin, 35.0);
     EXPECT_GE(r.metrics.qAvg, 0.955);
     EXPECT_GE(r.valence.v6After, 94.0);
