@@ -78,6 +78,7 @@ constexpr double kOperationSagStep = 0.1;
 constexpr int kAngleRepairRounds = 3;
 constexpr double kAngleRepairStep = 0.1;
 constexpr double kAngleRepairDrift = 0.3;
+constexpr int kAngleRepairMaxSteps = 64;
 
 //! Also the tie-break between candidates of equal gain: splits before collapses keeps the vertex
 //! count near the target (fertility 3000: 2960 vertices with collapses first, 2993 this way).
@@ -1427,11 +1428,13 @@ bool ValenceOptimizer::raiseAnglesAround(int v, double maxSag)
     const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
     const Vec3 t2 = n.cross(t1);
     const Vec3 start = pos_[v];
-    const ClosestPoint startClosest = closest_[v];
     double best = angleBefore;
     Vec3 bestPos = start;
-    ClosestPoint bestClosest = startClosest;
-    for (double step = kAngleRepairStep * edgeLength_; step > kAngleRepairStep * edgeLength_ / 32;) {
+    ClosestPoint bestClosest = closest_[v];
+    // At most kAngleRepairMaxSteps pattern steps: each accepted one raises the angle, but by
+    // as little as it likes.
+    double step = kAngleRepairStep * edgeLength_;
+    for (int iteration = 0; iteration < kAngleRepairMaxSteps && step > kAngleRepairStep * edgeLength_ / 32; ++iteration) {
         const Vec3 centre = bestPos;
         const ClosestPoint centreClosest = bestClosest;
         bool improved = false;
