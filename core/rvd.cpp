@@ -244,9 +244,10 @@ struct RestrictedVoronoiDiagram::Impl {
     double candidateMargin = 0;            // median of (candidate radius - stored radius) at the build
     int candidateCount = 0;
     bool rebuildCandidates = true;
-    // The few seeds that moved most since the candidate lists were found ("movers", at most
-    // kMaxMovers): every list is checked against them explicitly, so that the drift bound
-    // (`drift` of listFromCandidates) is the largest move of the others. One L-BFGS step that
+    // The seeds that moved more than a sixth of the candidate margin since the candidate lists
+    // were found ("movers", at most kMaxMovers, the farthest): every list is checked against them
+    // explicitly, so that the drift bound (`drift` of listFromCandidates) is the largest move of
+    // the others. One L-BFGS step that
     // sends a handful of seeds far used to invalidate every list (bunny 5000: a rebuild every
     // 3-4 evaluations, each ~10 ms on one thread, most triggered by 1-6 seeds).
     std::vector<uint32_t> movers;
@@ -325,7 +326,9 @@ struct RestrictedVoronoiDiagram::Impl {
     // Seed i's neighbour list from its candidates, when they certify it (see candidateIndex):
     // sorts the candidates by (distance², index) into `sorted` and keeps that order in the list
     // (nearly sorted next time, so the insertion sort does little work). `drift` is the largest
-    // move of any seed since the lists were found. False: moved too far, or a coincident seed.
+    // move of any seed but the movers since the lists were found; `certified2` receives the squared
+    // radius below which the candidate list is complete (certifiedRadius2). False: moved too
+    // far, a mover missing from the list, or a coincident seed.
     bool listFromCandidates(int i, double drift, std::vector<std::pair<double, uint32_t>>& sorted, uint32_t* listIndex,
                             double* listDist2, double& certified2)
     {
@@ -343,10 +346,10 @@ struct RestrictedVoronoiDiagram::Impl {
         const double complete = candidateRadius[i] - drift - (xi - candidatePosition[i]).norm();
         const double last = sorted[storedNeighbours - 1].first;
         if (!(complete > 0 && last < complete * complete * (1 - 1e-9) && sorted[0].first > 0)) return false;
-        // A mover that is now among the nearest must be one of them already (else the list is
-        // incomplete: the k-d tree decides). The rounding margin errs towards that check.
-        // Beyond the stored ones the candidates are complete up to the radius, and to the
-        // nearest mover (which may be missing from them).
+        // A mover now among the nearest must be one of them already (else the list is incomplete:
+        // the k-d tree decides; the rounding margin errs towards that check). Beyond the stored
+        // ones the candidates are complete up to the radius and to the nearest mover (which may
+        // be missing from them).
         double certified = complete * complete * (1 - 1e-9);
         for (uint32_t j : movers) {
             if (static_cast<int>(j) == i) continue;
