@@ -407,17 +407,11 @@ SurfaceWalk::SurfaceWalk(const TriMesh& mesh) : mesh_(mesh), across_(3 * mesh.fa
         for (int v : mesh.faces[f]) fan_[fill[v]++] = f;
 }
 
-double SurfaceWalk::distanceBound(const Vec3& p, int startFace) const
-{
-    int endFace = startFace;
-    return distanceBound(p, startFace, endFace);
-}
-
-double SurfaceWalk::distanceBound(const Vec3& p, int startFace, int& endFace) const
+double SurfaceWalk::distanceBound(const Vec3& p, int startFace, int* endFace) const
 {
     const ClosestPoint local = closestFrom(p, startFace);
     if (local.face < 0) return kInfinity;
-    endFace = local.face;
+    if (endFace) *endFace = local.face;
     return std::sqrt(local.squaredDistance);
 }
 

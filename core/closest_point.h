@@ -54,11 +54,10 @@ public:
     //! The mesh must outlive the walk.
     explicit SurfaceWalk(const TriMesh& mesh);
     //! A distance from p to the mesh that is at least the exact one; +infinity when `startFace`
-    //! is out of range. Thread-safe.
-    double distanceBound(const Vec3& p, int startFace) const;
-    //! The same, and the face the walk ended on in `endFace` (unchanged when `startFace` is out
-    //! of range): the start for the next query of a point that moved a little.
-    double distanceBound(const Vec3& p, int startFace, int& endFace) const;
+    //! is out of range. `endFace` (if given) receives the face the walk ended on (unchanged when
+    //! `startFace` is out of range): the start for the next query of a point that moved a
+    //! little. Thread-safe.
+    double distanceBound(const Vec3& p, int startFace, int* endFace = nullptr) const;
     //! The walk's answer itself: the nearest point of the last face reached (face -1 when
     //! `startFace` is out of range or p is not finite). `settled` (if given) tells whether the
     //! walk stopped at a local minimum (no neighbouring face nearer) rather than at its step limit.

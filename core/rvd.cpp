@@ -499,6 +499,23 @@ struct RestrictedVoronoiDiagram::Impl {
         return useCandidates ? n - static_cast<int>(failed) : 0;
     }
 
+    // Seed i's candidates beyond its stored neighbours, nearest first, as far as they are
+    // certified complete (certifiedRadius2): visit(j, |x_j - x_i|²) for each until it returns
+    // false (then false is returned).
+    template <class Visit>
+    bool visitCertifiedCandidates(int i, Visit&& visit) const
+    {
+        if (!(certifiedRadius2[i] > 0)) return true;
+        const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
+        const Vec3& xi = (*seeds)[i];
+        for (int q = storedNeighbours; q < candidateCount; ++q) {
+            const double dq = ((*seeds)[cand[q]] - xi).squaredNorm();
+            if (!(dq < certifiedRadius2[i])) break;
+            if (!visit(cand[q], dq)) return false;
+        }
+        return true;
+    }
+
     // The seed whose Voronoi cell contains point p, certified: a greedy walk over the neighbour
     // lists from `from`, then the security-radius test (no seed farther than 2|p - x_s| from
     // x_s can be nearer to p). Falls back to the kd-tree when the stored list and the certified
@@ -535,15 +552,7 @@ struct RestrictedVoronoiDiagram::Impl {
             bool more = true;
             for (int q = 0; q < storedNeighbours && more; ++q) more = scan(idx[q], d2[q]);
             // The stored neighbours did not reach the security radius: the certified candidates.
-            if (more && certifiedRadius2[current] > 0) {
-                const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(current) * candidateCount;
-                const Vec3& xc = (*seeds)[current];
-                for (int q = storedNeighbours; q < candidateCount && more; ++q) {
-                    const double dq = ((*seeds)[cand[q]] - xc).squaredNorm();
-                    if (!(dq < certifiedRadius2[current])) break;
-                    more = scan(cand[q], dq);
-                }
-            }
+            if (more) visitCertifiedCandidates(current, scan);
             if (next != current) {
                 current = next;
                 continue;
@@ -678,14 +687,7 @@ struct RestrictedVoronoiDiagram::Impl {
             if (d2[q] > covered) covered = d2[q], atCovered.clear();
             atCovered.push_back(idx[q]);
         }
-        if (certifiedRadius2[i] > 0) {
-            const uint32_t* cand = candidateIndex.data() + static_cast<size_t>(i) * candidateCount;
-            for (int q = storedNeighbours; q < candidateCount; ++q) {
-                const double dq = ((*seeds)[cand[q]] - xi).squaredNorm();
-                if (!(dq < certifiedRadius2[i])) break;
-                if (!visitOnce(cand[q], dq)) return *current;
-            }
-        }
+        if (!visitCertifiedCandidates(i, visitOnce)) return *current;
         const size_t n = seeds->size();
         for (size_t k = 4 * static_cast<size_t>(storedNeighbours) + 1;; k *= 4) {
             k = std::min(k, n);

@@ -236,7 +236,7 @@ private:
     //! At least faceSag(f), from walks over the input (SurfaceWalk) instead of tree queries;
     //! usually equal to it.
     double faceSagBound(int f) const;
-    //! The same from the given start faces, one per sag point (-1: faceSagBound's), which receive
+    //! The same from the given start faces, one per sag point (-1: sagPoints'), which receive
     //! the faces the walks ended on.
     double faceSagBound(int f, std::array<int, 4>& starts) const;
     //! faceSag(f), remembered with f's corner positions: an operation's check measures the faces
@@ -639,12 +639,8 @@ double ValenceOptimizer::faceSag(int f) const
 
 double ValenceOptimizer::faceSagBound(int f) const
 {
-    Vec3 points[4];
-    int starts[4];
-    sagPoints(f, points, starts);
-    double sag = 0;
-    for (int k = 0; k < 4; ++k) sag = std::max(sag, walk_->distanceBound(points[k], starts[k]));
-    return sag;
+    std::array<int, 4> starts = {-1, -1, -1, -1};  // sagPoints' start faces
+    return faceSagBound(f, starts);
 }
 
 double ValenceOptimizer::faceSagBound(int f, std::array<int, 4>& starts) const
@@ -655,7 +651,7 @@ double ValenceOptimizer::faceSagBound(int f, std::array<int, 4>& starts) const
     double sag = 0;
     for (int k = 0; k < 4; ++k) {
         if (starts[k] < 0) starts[k] = defaultStarts[k];
-        sag = std::max(sag, walk_->distanceBound(points[k], starts[k], starts[k]));
+        sag = std::max(sag, walk_->distanceBound(points[k], starts[k], &starts[k]));
     }
     return sag;
 }
