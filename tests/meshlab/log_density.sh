@@ -70,8 +70,11 @@ grep -Eq "FCVT quality: .*triangles with an angle under 30 deg [0-9.e-]+%, over 
 grep -Eq "FCVT valence colours: interior vertices: [0-9]+ of valence under 6 \(blue\), [0-9]+ of valence 6 \(white\), [0-9]+ over 6 \(pink\)" "$log" \
   || fail "no valence colours in words"
 "$cli" convert "$work/out/bunny-curvature.ply" "$work/out/bunny-curvature-fcvt.ply" --quiet
+# Correlation bar 0.72: at 1500 vertices the relaxation's looser limits (core/valence.cpp,
+# kRelaxSagShareOfLargest) trade a little of it for shape (CLI, bunny.obj: 0.753 -> 0.743,
+# Q_avg 0.913 -> 0.926; this float build of the layer: 0.749); the uniform mesh scores 0.07.
 python3 "$FCVT_SOURCE_DIR/tests/cli/check_adaptive.py" "$cli" "$FCVT_SOURCE_DIR/resources/bunny.obj" 1500 \
-  "$work/out/adaptive" 1 0.75 0.9 "$work/out/bunny-curvature-fcvt.ply" || fail "the curvature density does not show in the edge lengths"
+  "$work/out/adaptive" 1 0.72 0.9 "$work/out/bunny-curvature-fcvt.ply" || fail "the curvature density does not show in the edge lengths"
 
 # B.
 "$FCVT_SOURCE_DIR/tests/meshlab/obj2off.sh" "$FCVT_SOURCE_DIR/resources/torus.obj" "$work/out/torus.off"
