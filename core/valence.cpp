@@ -353,6 +353,14 @@ private:
     //! One vertex of raiseSmallestAngles: a pattern search in its tangent plane; returns whether
     //! it moved.
     bool raiseAnglesAround(int v, double maxSag);
+    //! The repairs' pattern search for a Free vertex v on the surface: 8 directions in its tangent
+    //! plane, a first step of kAngleRepairStep edge lengths halved when none improves, down to
+    //! `smallestStepShare` of it, at most `maxSteps` steps, within kAngleRepairDrift edges of
+    //! where v was. At each trial position (v and its closest point set) `improves()` says
+    //! whether it is the best so far (and keeps its score); the search stops early once `done()`.
+    //! v ends at the best position; returns whether it moved.
+    template <class Improves, class Done>
+    bool searchOnSurface(int v, int maxSteps, double smallestStepShare, Improves&& improves, Done&& done);
     //! After the angle repair: the corners of the faces that sag most move to lower the largest
     //! sag of their faces (see kSagRepairRounds).
     void lowerLargestSags();
@@ -1476,6 +1484,39 @@ void ValenceOptimizer::raiseSmallestAngles()
     }
 }
 
+template <class Improves, class Done>
+bool ValenceOptimizer::searchOnSurface(int v, int maxSteps, double smallestStepShare, Improves&& improves, Done&& done)
+{
+    // Tangent directions at v: 8 around its normal.
+    const Vec3 n = normal_[v];
+    const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+    const Vec3 t2 = n.cross(t1);
+    const Vec3 start = pos_[v];
+    Vec3 bestPos = start;
+    ClosestPoint bestClosest = closest_[v];
+    double step = kAngleRepairStep * edgeLength_;
+    for (int iteration = 0; iteration < maxSteps && !done() && step > kAngleRepairStep * edgeLength_ * smallestStepShare;
+         ++iteration) {
+        const Vec3 centre = bestPos;
+        const ClosestPoint centreClosest = bestClosest;
+        bool improved = false;
+        for (int k = 0; k < 8; ++k) {
+            const double phi = k * kPi / 4;
+            const Vec3 q = centre + step * (std::cos(phi) * t1 + std::sin(phi) * t2);
+            const ClosestPoint cp = surface_.tree.closest(q, centreClosest.face);
+            if ((cp.point - start).norm() > kAngleRepairDrift * edgeLength_) continue;
+            setPosition(v, cp.point, cp);
+            if (improves()) {
+                bestPos = cp.point, bestClosest = cp;
+                improved = true;
+            }
+        }
+        setPosition(v, bestPos, bestClosest);
+        if (!improved) step *= 0.5;
+    }
+    return bestPos != start;
+}
+
 bool ValenceOptimizer::raiseAnglesAround(int v, double maxSag)
 {
     if (!vertexAlive_[v] || role_[v] != VertexRole::Free || vertexFaces_[v].empty() || !manifold_[v]) return false;
@@ -1486,38 +1527,17 @@ bool ValenceOptimizer::raiseAnglesAround(int v, double maxSag)
     for (int f : faces) sagBefore = std::max(sagBefore, cachedFaceSag(f));
     const double sagLimit = std::max(kRelaxSagGrowth * sagBefore, maxSag);
     const double minDot = std::min(kMinNormalDot, dotBefore);
-    // Tangent directions at v: 8 around its normal.
-    const Vec3 n = normal_[v];
-    const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-    const Vec3 t2 = n.cross(t1);
-    const Vec3 start = pos_[v];
-    double best = angleBefore;
-    Vec3 bestPos = start;
-    ClosestPoint bestClosest = closest_[v];
     // At most kAngleRepairMaxSteps pattern steps: each accepted one raises the angle, but by
     // as little as it likes.
-    double step = kAngleRepairStep * edgeLength_;
-    for (int iteration = 0; iteration < kAngleRepairMaxSteps && step > kAngleRepairStep * edgeLength_ / 32; ++iteration) {
-        const Vec3 centre = bestPos;
-        const ClosestPoint centreClosest = bestClosest;
-        bool improved = false;
-        for (int k = 0; k < 8; ++k) {
-            const double phi = k * kPi / 4;
-            const Vec3 q = centre + step * (std::cos(phi) * t1 + std::sin(phi) * t2);
-            const ClosestPoint cp = surface_.tree.closest(q, centreClosest.face);
-            if ((cp.point - start).norm() > kAngleRepairDrift * edgeLength_) continue;
-            setPosition(v, cp.point, cp);
-            double angle, dot;
-            localShape(faces, angle, dot);
-            if (angle > best + 1e-9 && dot >= minDot && !sagExceeds(faces, sagLimit)) {
-                best = angle, bestPos = cp.point, bestClosest = cp;
-                improved = true;
-            }
-        }
-        setPosition(v, bestPos, bestClosest);
-        if (!improved) step *= 0.5;
-    }
-    return bestPos != start;
+    double best = angleBefore;
+    auto improves = [&] {
+        double angle, dot;
+        localShape(faces, angle, dot);
+        if (!(angle > best + 1e-9 && dot >= minDot && !sagExceeds(faces, sagLimit))) return false;
+        best = angle;
+        return true;
+    };
+    return searchOnSurface(v, kAngleRepairMaxSteps, 1.0 / 32, improves, [] { return false; });
 }
 
 void ValenceOptimizer::lowerLargestSags()
@@ -1600,38 +1620,17 @@ bool ValenceOptimizer::lowerSagAround(int v, double target)
         return sum / faces.size();
     };
     const double minShape = meanShape() - kSagRepairShapeLoss;
-    const Vec3 n = normal_[v];
-    const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-    const Vec3 t2 = n.cross(t1);
-    const Vec3 start = pos_[v];
     double best = largestSag();
-    if (!(best > target)) return false;
-    Vec3 bestPos = start;
-    ClosestPoint bestClosest = closest_[v];
-    double step = kAngleRepairStep * edgeLength_;
-    for (int iteration = 0; iteration < kSagRepairMaxSteps && best > target && step > kAngleRepairStep * edgeLength_ / 8; ++iteration) {
-        const Vec3 centre = bestPos;
-        const ClosestPoint centreClosest = bestClosest;
-        bool improved = false;
-        for (int k = 0; k < 8; ++k) {
-            const double phi = k * kPi / 4;
-            const Vec3 q = centre + step * (std::cos(phi) * t1 + std::sin(phi) * t2);
-            const ClosestPoint cp = surface_.tree.closest(q, centreClosest.face);
-            if ((cp.point - start).norm() > kAngleRepairDrift * edgeLength_) continue;
-            setPosition(v, cp.point, cp);
-            double angle, dot;
-            localShape(faces, angle, dot);  // (the angles per face: sharper())
-            if (dot < minDot || sharper() || meanShape() < minShape) continue;
-            const double sagHere = largestSag();
-            if (sagHere < best * (1 - 1e-6)) {
-                best = sagHere, bestPos = cp.point, bestClosest = cp;
-                improved = true;
-            }
-        }
-        setPosition(v, bestPos, bestClosest);
-        if (!improved) step *= 0.5;
-    }
-    return bestPos != start;
+    auto improves = [&] {
+        double angle, dot;
+        localShape(faces, angle, dot);  // (the angles per face: sharper())
+        if (dot < minDot || sharper() || meanShape() < minShape) return false;
+        const double sagHere = largestSag();
+        if (!(sagHere < best * (1 - 1e-6))) return false;
+        best = sagHere;
+        return true;
+    };
+    return searchOnSurface(v, kSagRepairMaxSteps, 1.0 / 8, improves, [&] { return !(best > target); });
 }
 
 long long ValenceOptimizer::irregularity() const
