@@ -247,9 +247,9 @@ struct RestrictedVoronoiDiagram::Impl {
     // The seeds that moved more than a sixth of the candidate margin since the candidate lists
     // were found ("movers", at most kMaxMovers, the farthest): every list is checked against them
     // explicitly, so that the drift bound (`drift` of listFromCandidates) is the largest move of
-    // the others. One L-BFGS step that
-    // sends a handful of seeds far used to invalidate every list (bunny 5000: a rebuild every
-    // 3-4 evaluations, each ~10 ms on one thread, most triggered by 1-6 seeds).
+    // the others. One L-BFGS step that sends a handful of seeds far used to invalidate every list
+    // (bunny 5000: a rebuild every 3-4 evaluations, each ~10 ms on one thread, most triggered by
+    // 1-6 seeds).
     std::vector<uint32_t> movers;
     // Per seed: its candidate list (candidateIndex) is, in this evaluation, sorted by distance
     // and complete below this squared distance (every seed nearer is in it); 0 = not known.

@@ -359,6 +359,11 @@ private:
     //! where v was. At each trial position (v and its closest point set) `improves()` says
     //! whether it is the best so far (and keeps its score); the search stops early once `done()`.
     //! v ends at the best position; returns whether it moved.
+    //! Whether the repairs may move v: a live Free vertex with a single fan of faces.
+    bool repairMovable(int v) const
+    {
+        return vertexAlive_[v] && role_[v] == VertexRole::Free && !vertexFaces_[v].empty() && manifold_[v];
+    }
     template <class Improves, class Done>
     bool searchOnSurface(int v, int maxSteps, double smallestStepShare, Improves&& improves, Done&& done);
     //! After the angle repair: the corners of the faces that sag most move to lower the largest
@@ -1519,7 +1524,7 @@ bool ValenceOptimizer::searchOnSurface(int v, int maxSteps, double smallestStepS
 
 bool ValenceOptimizer::raiseAnglesAround(int v, double maxSag)
 {
-    if (!vertexAlive_[v] || role_[v] != VertexRole::Free || vertexFaces_[v].empty() || !manifold_[v]) return false;
+    if (!repairMovable(v)) return false;
     const std::vector<int>& faces = vertexFaces_[v];
     double angleBefore, dotBefore;
     localShape(faces, angleBefore, dotBefore);
@@ -1583,7 +1588,7 @@ void ValenceOptimizer::lowerLargestSags()
 
 bool ValenceOptimizer::lowerSagAround(int v, double target)
 {
-    if (!vertexAlive_[v] || role_[v] != VertexRole::Free || vertexFaces_[v].empty() || !manifold_[v]) return false;
+    if (!repairMovable(v)) return false;
     const std::vector<int>& faces = vertexFaces_[v];
     double angleBefore, dotBefore;
     localShape(faces, angleBefore, dotBefore);
