@@ -7,6 +7,7 @@
 #include "optimize.h"
 #include "rdt.h"
 #include "field.h"
+#include "lattice.h"
 #include "metrics.h"
 #include "valence.h"
 #include "closest_point.h"
@@ -264,6 +265,29 @@ struct FertilitySetup {
 };
 
 const FertilitySetup& fertility3000() { return shared<FertilitySetup>(); }
+
+// The start of the optimisation on fertility.off at 3000 samples: the lattice points of the
+// position field (the default, lattice.h) against the random samples it replaces, with the
+// Lloyd steps that follow either (arg 0: random; 1: lattice; 2: lattice without Lloyd steps).
+void BM_StartFertility3000(benchmark::State& state)
+{
+    const FertilitySetup& setup = fertility3000();
+    omp_set_num_threads(2);
+    EnergyFunction energy(setup.surface);
+    ClosestPointTree tree(setup.surface);
+    for (auto _ : state) {
+        std::vector<Vec3> seeds;
+        if (state.range(0) == 0) {
+            seeds = sampleSurfaceUniform(setup.surface, 3000, 1);
+        } else {
+            seeds = latticeSamples(setup.surface, setup.field, 3000, LatticeParams{});
+            for (Vec3& p : seeds) p = tree.closest(p).point;
+        }
+        if (state.range(0) != 2) lloydRelaxation(energy, setup.surface, seeds, 10, 1);
+        benchmark::DoNotOptimize(seeds.data());
+    }
+}
+BENCHMARK(BM_StartFertility3000)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The valence optimisation (operations, then the relaxation) with its default parameters.
 void BM_ValenceFertility3000(benchmark::State& state)

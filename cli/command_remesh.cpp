@@ -41,7 +41,7 @@ void printUsage()
         "                        curvature-max, curvature-min, or user (IN's PLY vertex properties\n"
         "                        rosy_x rosy_y rosy_z) (default %s)\n"
         "  --lambda L            weight of the field-alignment term, >= 0; 0 = pure CVT (default %g)\n"
-        "  --lloyd-iterations K  Lloyd steps from the random start before L-BFGS, >= 0 (default %d)\n"
+        "  --lloyd-iterations K  Lloyd steps from the start before L-BFGS, >= 0 (default %d)\n"
         "  --cvt-iterations A    L-BFGS iterations on the CVT energy, >= 0 (default %d)\n"
         "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d);\n"
         "                        the paper's fixed schedule: --lloyd-iterations 30 --cvt-iterations 65\n"
@@ -49,6 +49,10 @@ void printUsage()
         "  --full-surface        optimise on the input itself, as the paper does, even when it has many\n"
         "                        more faces than the output (by default such an input is optimised on\n"
         "                        a coarser copy, %d faces per vertex, and the result put back on it)\n"
+        "  --random-start        start from random samples instead of the lattice points of the\n"
+        "                        field-aligned position field (the default start when the field is\n"
+        "                        used with a uniform density; it has no 5-7 pairs away from the field's\n"
+        "                        singularities)\n"
         "  --no-valence          skip the valence optimisation (flips, collapses, splits towards valence\n"
         "                        6, 4 on boundaries, then a relaxation; on by default)\n"
         "  --no-repair           only check the input, as before the repair stage: refuse non-manifold\n"
@@ -121,6 +125,7 @@ RemeshParams paramsFrom(const Arguments& a)
     p.threads = static_cast<int>(a.integer("threads", p.threads, 0, 4096));
     p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds, 0.0);
     p.valenceOptimization = !a.flag("no-valence");
+    p.latticeStart = !a.flag("random-start");
     if (a.flag("full-surface")) p.optimisationFacesPerSample = 0;
     p.repair = !a.flag("no-repair");
     p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees, 0.0);
@@ -149,6 +154,7 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"threads", p.threads},
             {"time_limit_s", p.timeLimitSeconds},
             {"valence_optimization", p.valenceOptimization},
+            {"lattice_start", p.latticeStart},
             {"feature_angle", p.featureAngleDegrees},
             {"adaptive", p.density == DensitySource::Curvature ? "curvature" : "none"},
             {"gradation", p.gradation},
@@ -164,7 +170,7 @@ int runRemesh(const std::vector<std::string>& args)
                       {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations", "seed",
                        "threads",
                        "time-limit", "report", "feature-angle", "adaptive", "gradation"},
-                      {"quiet", "help", "no-valence", "no-repair", "full-surface"});
+                      {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -250,6 +256,12 @@ int runRemesh(const std::vector<std::string>& args)
                                                {"params", paramsOut},
                                                {"field", field},
                                                {"valence", valenceJson(params.valenceOptimization, result.valence)},
+                                               {"start", result.lattice.passes > 0
+                                                             ? nlohmann::ordered_json{{"kind", "lattice"},
+                                                                                      {"spacing", result.lattice.spacing},
+                                                                                      {"passes", result.lattice.passes},
+                                                                                      {"samples", result.lattice.samples}}
+                                                             : nlohmann::ordered_json{{"kind", "random"}}},
                                                {"energy_history", energyHistoryJson(result.energyHistory)},
                                                {"warnings", warnings}};
         writeJsonFile(*reportPath, report);

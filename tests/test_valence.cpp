@@ -134,6 +134,9 @@ TriMesh remeshedWithoutValence(const TriMesh& input, int vertices)
     p.fcvtIterations = 20;
     p.valenceOptimization = false;
     p.computeDistances = false;
+    // Random starts: these tests need meshes with 5-7 pairs for the optimiser to remove (the
+    // lattice start leaves the cylinder with none).
+    p.latticeStart = false;
     // The starting meshes these tests were measured on: optimised on the input itself (camelhead
     // 1500 on the coarse copy starts with a border where weight 4 gives 86.8 % of valence 4 and
     // weight 1 91.8 %).
@@ -312,7 +315,7 @@ TEST(Valence, RelaxationMakesAJitteredLatticeEquilateral)
 
 // Issue 5's bars through the whole pipeline (seed 1, defaults), with a small margin under the
 // measured figures: V6% >= 94, θ_min >= 32°, Q_avg >= 0.95 (issue 13: higher), no angle under
-// 30°; the vertex count within 1 % of the target and the edges about as aligned to the field as
+// 30°; the vertex count within 1.5 % of the target and the edges about as aligned to the field as
 // before.
 TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
 {
@@ -338,11 +341,16 @@ TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
         EXPECT_GE(r.metrics.thetaMin, 32.0);
         EXPECT_GE(r.metrics.qAvg, c.minQAvg);
         EXPECT_EQ(r.metrics.pctLt30, 0.0);
-        EXPECT_NEAR(r.mesh.vertexCount(), c.vertices, 0.01 * c.vertices);
+        // Within 1.5 %: the lattice start's count moves by whole rows (torus: 989).
+        EXPECT_NEAR(r.mesh.vertexCount(), c.vertices, 0.015 * c.vertices);
         // The relaxation's field step brings most of the alignment back (the operations alone
-        // leave it ~23 % worse; measured after the relaxation: torus +0.7 %, fertility +8.4 %,
-        // fandisk -5.7 % against before the stage).
-        EXPECT_LE(r.valence.fieldDistanceAfter, 1.10 * r.valence.fieldDistanceBefore);
+        // leave it ~23 % worse). Measured after the relaxation against before the stage: from
+        // the random start torus +0.7 %, fertility +8.4 %, fandisk -5.7 %; from the lattice
+        // start, whose mesh before the stage is better aligned, torus -4.7 %, fertility +5.9 %,
+        // fandisk +9.0 %.
+        std::printf("%s: field distance before the stage %.4f, after the operations %.4f, after %.4f\n", c.file,
+                    r.valence.fieldDistanceBefore, r.valence.fieldDistanceOperations, r.valence.fieldDistanceAfter);
+        EXPECT_LE(r.valence.fieldDistanceAfter, 1.15 * r.valence.fieldDistanceBefore);
         EXPECT_LT(r.valence.fieldDistanceAfter, 0.95 * r.valence.fieldDistanceOperations);
         EXPECT_TRUE(computeTopology(r.mesh).manifold());
     }
@@ -459,12 +467,15 @@ TEST(Valence, DeterministicWhateverTheThreadCount)
     EXPECT_EQ(a.faces, d.faces);
 }
 
-// The default pipeline on a bundled mesh, with one seed.
+// The default pipeline on a bundled mesh, with one seed, from the random start the valence
+// stage's figures below were measured on (with the lattice start every seed gives the same
+// mesh; test_lattice.cpp pins that pipeline's figures).
 RemeshResult remeshWithDefaults(const std::string& resource, int vertexCount, std::uint64_t seed)
 {
     RemeshParams params;
     params.vertexCount = vertexCount;
     params.seed = seed;
+    params.latticeStart = false;
     return remesh(readMesh(testmesh::resource(resource)), params);
 }
 
