@@ -41,7 +41,8 @@ void printUsage()
         "                        curvature-max, curvature-min, or user (IN's PLY vertex properties\n"
         "                        rosy_x rosy_y rosy_z) (default %s)\n"
         "  --lambda L            weight of the field-alignment term, >= 0; 0 = pure CVT (default %g)\n"
-        "  --lloyd-iterations K  Lloyd steps from the start before L-BFGS, >= 0 (default %d)\n"
+        "  --lloyd-iterations K  Lloyd steps from the start before L-BFGS, >= 0 (default %d from the\n"
+        "                        lattice start, %d from a random one)\n"
         "  --cvt-iterations A    L-BFGS iterations on the CVT energy, >= 0 (default %d)\n"
         "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d);\n"
         "                        the paper's fixed schedule: --lloyd-iterations 30 --cvt-iterations 65\n"
@@ -76,7 +77,7 @@ void printUsage()
         "                        on stderr otherwise); without --report, d_RMS and d_H are then\n"
         "                        not computed (nothing would show them)\n"
         "  -h, --help            show this help\n",
-        vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.lloydIterations, defaults.cvtIterations,
+        vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.latticeLloydIterations, defaults.lloydIterations, defaults.cvtIterations,
         defaults.fcvtIterations, defaults.optimisationFacesPerSample, defaults.featureAngleDegrees, defaults.gradation,
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
@@ -118,7 +119,8 @@ RemeshParams paramsFrom(const Arguments& a)
     if (a.has("vertices")) p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, kMinVertexCount, kMaxVertexCount));
     p.fieldSource = fieldOption(a, p.fieldSource, true);
     p.lambda = a.number("lambda", p.lambda, 0.0);
-    p.lloydIterations = static_cast<int>(a.integer("lloyd-iterations", p.lloydIterations, 0, INT_MAX));
+    if (a.has("lloyd-iterations"))  // from either start
+        p.lloydIterations = p.latticeLloydIterations = static_cast<int>(a.integer("lloyd-iterations", p.lloydIterations, 0, INT_MAX));
     p.cvtIterations = static_cast<int>(a.integer("cvt-iterations", p.cvtIterations, 0, INT_MAX));
     p.fcvtIterations = static_cast<int>(a.integer("fcvt-iterations", p.fcvtIterations, 0, INT_MAX));
     p.seed = a.unsignedInteger("seed", p.seed);
@@ -148,6 +150,7 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"field", fieldSourceName(p.fieldSource)},
             {"lambda", p.lambda},
             {"lloyd_iterations", p.lloydIterations},
+            {"lattice_lloyd_iterations", p.latticeLloydIterations},
             {"cvt_iterations", p.cvtIterations},
             {"fcvt_iterations", p.fcvtIterations},
             {"seed", p.seed},

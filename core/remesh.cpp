@@ -44,7 +44,7 @@ void validate(const RemeshParams& p)
             if (!x.allFinite()) throw InvalidInputError("an initial sample has a NaN or infinite coordinate");
     }
     if (!std::isfinite(p.lambda) || p.lambda < 0) throw InvalidInputError("lambda must be a finite number >= 0");
-    if (p.lloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
+    if (p.lloydIterations < 0 || p.latticeLloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
         throw InvalidInputError("iteration counts must be >= 0");
     if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
     if (p.optimisationFacesPerSample < 0) throw InvalidInputError("optimisation faces per sample must be >= 0");
@@ -210,7 +210,14 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     const bool useField = params.fcvtIterations > 0 && params.lambda > 0;
     const std::vector<Segment> border = boundarySegments(optSurface);  // the input's own border edges
     const bool constrained = !border.empty() || !features.empty();
-    const double expectedEvaluations = params.lloydIterations + 1.1 * (params.cvtIterations + params.fcvtIterations) +
+    // The start (RemeshParams::latticeStart). A constant density (e.g. a per-vertex density of 1
+    // everywhere) is the uniform one. Not with feature lines yet: lattice points near a crease
+    // left fandisk's creases cut (1.7 % of the diagonal off, Features.FandiskKeepsItsCreasesAndCorners).
+    const bool uniform = std::all_of(rho.begin(), rho.end(), [&](double r) { return r == rho.front(); });
+    const bool latticeStart =
+        params.initialSamples.empty() && params.latticeStart && useField && uniform && features.segments.empty();
+    const int lloydSteps = latticeStart ? params.latticeLloydIterations : params.lloydIterations;
+    const double expectedEvaluations = lloydSteps + 1.1 * (params.cvtIterations + params.fcvtIterations) +
                                        (constrained ? params.boundaryIterations : 0) + 2;
     EnergyFunction energy(optSurface, rho);
     ClosestPointTree tree(optSurface);
@@ -228,7 +235,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             result.energyHistory.push_back({stage, value.cvt, value.field});
         }
         const double fraction = std::min(1.0, energy.evaluations() / expectedEvaluations);
-        const int budget = stage == "lloyd" ? params.lloydIterations
+        const int budget = stage == "lloyd" ? lloydSteps
                          : stage == "cvt"   ? params.cvtIterations
                          : stage == "fcvt"  ? params.fcvtIterations : 0;
         if (stage != stepStage) stepStage = stage, steps = 0;
@@ -266,11 +273,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     std::vector<Vec3> seeds;
     std::vector<SampleConstraint> sampleRoles;
     pipeline.run("sampling", [&] {
-        // A constant density (e.g. a per-vertex density of 1 everywhere) is the uniform one.
-        const bool uniform = std::all_of(rho.begin(), rho.end(), [&](double r) { return r == rho.front(); });
-        // Not with feature lines yet: lattice points near a crease left fandisk's creases cut
-        // (1.7 % of the diagonal off, Features.FandiskKeepsItsCreasesAndCorners).
-        if (params.initialSamples.empty() && params.latticeStart && useField && uniform && features.segments.empty()) {
+        if (latticeStart) {
             // The field-aligned lattice (lattice.h) on the optimisation surface, put on it.
             LatticeParams lattice;
             lattice.seed = params.seed;
@@ -300,7 +303,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     try {
         pipeline.run("lloyd", [&] {
             stage = "lloyd";
-            lloydRelaxation(energy, optSurface, seeds, params.lloydIterations, params.seed);
+            lloydRelaxation(energy, optSurface, seeds, lloydSteps, params.seed);
         });
         pipeline.run("cvt", [&] {
             stage = "cvt";
