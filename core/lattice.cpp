@@ -35,10 +35,43 @@ void nearestInFrame(double x, double y, double spacing, double& a, double& b)
         }
 }
 
+// nearestLatticePoint with the frame's second axis t = n × d given.
+inline Vec3 nearestWithFrame(const Vec3& origin, const Vec3& d, const Vec3& t, double spacing, const Vec3& target)
+{
+    const Vec3 r = target - origin;
+    double a = 0, b = 0;
+    nearestInFrame(r.dot(d), r.dot(t), spacing, a, b);
+    return origin + spacing * ((a + 0.5 * b) * d + (rosy::kSin60 * b) * t);
+}
+
+// What the sweeps of one level read and never change: each vertex's frame (d, n × d) and each
+// directed edge's middle point (computed once, for every pass of latticeSamples).
+struct LevelFrames {
+    std::vector<Vec3> d, t;
+    std::vector<Vec3> middle;  // per directed entry of the level's graph
+};
+
+LevelFrames levelFrames(const FieldGraph& g, const std::vector<Vec3>& d)
+{
+    LevelFrames f;
+    const int n = g.vertexCount();
+    f.d = d;
+    f.t.resize(n);
+    f.middle.resize(g.neighbours.size());
+#pragma omp parallel for schedule(static) if (n > 32768)
+    for (int i = 0; i < n; ++i) {
+        f.t[i] = g.normals[i].cross(d[i]);
+        for (int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) {
+            const int j = g.neighbours[e];
+            f.middle[e] = middlePoint(g.positions[i], g.normals[i], g.positions[j], g.normals[j]);
+        }
+    }
+    return f;
+}
+
 // One level's position field: Gauss–Seidel sweeps colour class by colour class (the field
 // solver's scheme, field_hierarchy.cpp), so the result does not depend on the thread count.
-void smoothPositions(const FieldGraph& g, const std::vector<Vec3>& d, std::vector<Vec3>& origin, double spacing,
-                     int iterations)
+void smoothPositions(const FieldGraph& g, const LevelFrames& f, std::vector<Vec3>& origin, double spacing, int iterations)
 {
     const int n = g.vertexCount();
     const int colours = static_cast<int>(g.colourOffsets.size()) - 1;
@@ -59,17 +92,16 @@ void smoothPositions(const FieldGraph& g, const std::vector<Vec3>& d, std::vecto
                 double weightSum = 0;
                 for (int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) {
                     const int j = g.neighbours[e];
-                    const Vec3 middle = middlePoint(xi, ni, g.positions[j], g.normals[j]);
-                    const Vec3 mine = nearestLatticePoint(current, d[i], ni, spacing, middle);
+                    const Vec3 mine = nearestWithFrame(current, f.d[i], f.t[i], spacing, f.middle[e]);
                     // j's point nearest to mine, not to the middle: near a tie the two lattices
                     // would otherwise pick different points and see a whole lattice step.
-                    const Vec3 theirs = nearestLatticePoint(origin[j], d[j], g.normals[j], spacing, mine);
+                    const Vec3 theirs = nearestWithFrame(origin[j], f.d[j], f.t[j], spacing, mine);
                     const double w = g.weights[e];
                     current += (w / (weightSum + w)) * (theirs - mine);
                     weightSum += w;
                     current -= ni.dot(current - xi) * ni;  // back on i's tangent plane
                 }
-                origin[i] = nearestLatticePoint(current, d[i], ni, spacing, xi);
+                origin[i] = nearestWithFrame(current, f.d[i], f.t[i], spacing, xi);
             }
         }
     }
@@ -120,9 +152,9 @@ double latticeSpacingFor(const TriMesh& surface, int count)
 
 namespace {
 
-// Directions on every level of the hierarchy: level 0 is the field's, each coarser vertex's is
-// the compatible average (6-RoSy mean) of its children's.
-std::vector<std::vector<Vec3>> directionsOnLevels(const FieldHierarchyLevels& h, const DirectionField& field)
+// Frames on every level of the hierarchy: level 0's directions are the field's, each coarser
+// vertex's the compatible average (6-RoSy mean) of its children's.
+std::vector<LevelFrames> framesOnLevels(const FieldHierarchyLevels& h, const DirectionField& field)
 {
     const int levels = static_cast<int>(h.levels.size());
     std::vector<std::vector<Vec3>> dirs(levels);
@@ -142,13 +174,15 @@ std::vector<std::vector<Vec3>> directionsOnLevels(const FieldHierarchyLevels& h,
             if (!averageCompatible(coarse.normals[p], children.data() + first[p], first[p + 1] - first[p], dirs[l][p]))
                 dirs[l][p] = rosy::anyTangent(coarse.normals[p]);
     }
-    return dirs;
+    std::vector<LevelFrames> frames;
+    for (int l = 0; l < levels; ++l) frames.push_back(levelFrames(h.levels[l], dirs[l]));
+    return frames;
 }
 
 // Coarse to fine: at the coarsest level every origin starts at its vertex; each level is
 // smoothed and hands its lattices to its children (the parent's origin on the child's plane,
 // moved to the lattice point nearest the child).
-std::vector<Vec3> solveOnHierarchy(const FieldHierarchyLevels& h, const std::vector<std::vector<Vec3>>& dirs,
+std::vector<Vec3> solveOnHierarchy(const FieldHierarchyLevels& h, const std::vector<LevelFrames>& frames,
                                    double spacing, int iterations, std::uint64_t seed)
 {
     const int levels = static_cast<int>(h.levels.size());
@@ -159,11 +193,11 @@ std::vector<Vec3> solveOnHierarchy(const FieldHierarchyLevels& h, const std::vec
     std::mt19937_64 rng(seed);
     for (int v = 0; v < coarsest.vertexCount(); ++v) {
         const double a = unitInterval(rng()), b = unitInterval(rng());
-        const Vec3& d = dirs[levels - 1][v];
-        origin[v] += spacing * ((a + 0.5 * b) * d + (rosy::kSin60 * b) * coarsest.normals[v].cross(d));
+        const LevelFrames& f = frames[levels - 1];
+        origin[v] += spacing * ((a + 0.5 * b) * f.d[v] + (rosy::kSin60 * b) * f.t[v]);
     }
     for (int l = levels - 1; l >= 0; --l) {
-        smoothPositions(h.levels[l], dirs[l], origin, spacing, iterations);
+        smoothPositions(h.levels[l], frames[l], origin, spacing, iterations);
         if (l == 0) break;
         const FieldGraph& fine = h.levels[l - 1];
         const std::vector<int>& parent = h.parents[l - 1];
@@ -174,7 +208,7 @@ std::vector<Vec3> solveOnHierarchy(const FieldHierarchyLevels& h, const std::vec
             const Vec3& n = fine.normals[v];
             Vec3 o = origin[parent[v]];
             o -= n.dot(o - x) * n;
-            finer[v] = nearestLatticePoint(o, dirs[l - 1][v], n, spacing, x);
+            finer[v] = nearestWithFrame(o, frames[l - 1].d[v], frames[l - 1].t[v], spacing, x);
         }
         origin.swap(finer);
     }
@@ -274,14 +308,14 @@ std::vector<Vec3> solvePositionField(const TriMesh& surface, const DirectionFiel
                                      std::uint64_t seed)
 {
     const FieldHierarchyLevels h = buildFieldHierarchy(surface, field.normals);
-    return solveOnHierarchy(h, directionsOnLevels(h, field), spacing, iterations, seed);
+    return solveOnHierarchy(h, framesOnLevels(h, field), spacing, iterations, seed);
 }
 
 std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& field, int count, const LatticeParams& params,
                                  LatticeReport* report)
 {
     const FieldHierarchyLevels h = buildFieldHierarchy(surface, field.normals);
-    const std::vector<std::vector<Vec3>> dirs = directionsOnLevels(h, field);
+    const std::vector<LevelFrames> frames = framesOnLevels(h, field);
     LatticeReport local;
     LatticeReport& r = report ? *report : local;
     r = LatticeReport{};
@@ -292,7 +326,7 @@ std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& f
     double spacing = latticeSpacingFor(surface, count);
     for (r.passes = 1; r.passes <= params.maxPasses; ++r.passes) {
         int candidates = 0;
-        std::vector<Vec3> points = latticePoints(surface, field, solveOnHierarchy(h, dirs, spacing, params.iterations, params.seed), spacing, &candidates);
+        std::vector<Vec3> points = latticePoints(surface, field, solveOnHierarchy(h, frames, spacing, params.iterations, params.seed), spacing, &candidates);
         const double ratio = double(points.size()) / count;
         if (samples.empty() || std::abs(double(points.size()) - count) < std::abs(double(samples.size()) - count)) {
             samples.swap(points);

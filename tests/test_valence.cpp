@@ -346,8 +346,8 @@ TEST(Valence, PipelineOnClosedMeshesReachesTheBars)
         // The relaxation's field step brings most of the alignment back (the operations alone
         // leave it ~23 % worse). Measured after the relaxation against before the stage: from
         // the random start torus +0.7 %, fertility +8.4 %, fandisk -5.7 %; from the lattice
-        // start, whose mesh before the stage is better aligned, torus -4.7 %, fertility +5.9 %,
-        // fandisk +9.0 %.
+        // start, whose mesh before the stage is better aligned, torus +0.4 %, fertility +7.6 %,
+        // fandisk +11.8 %.
         std::printf("%s: field distance before the stage %.4f, after the operations %.4f, after %.4f\n", c.file,
                     r.valence.fieldDistanceBefore, r.valence.fieldDistanceOperations, r.valence.fieldDistanceAfter);
         EXPECT_LE(r.valence.fieldDistanceAfter, 1.15 * r.valence.fieldDistanceBefore);
