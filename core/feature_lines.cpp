@@ -2,8 +2,7 @@
 
 #include "errors.h"
 #include "mesh_edges.h"
-
-#include <nanoflann.hpp>
+#include "point_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,15 +15,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // A feature line that turns by more than this at a vertex has a corner there.
 constexpr double kCornerTurnDegrees = 25.0;
-
-struct PointCloud {
-    const std::vector<Vec3>* points = nullptr;
-    size_t kdtree_get_point_count() const { return points->size(); }
-    double kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-    template <class BBox>
-    bool kdtree_get_bbox(BBox&) const { return false; }
-};
-using PointTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3, uint32_t>;
 
 // Per vertex, how far (degrees) a polyline made of `edges` turns there: 0 going straight on,
 // 180 where more than two of its edges meet, 0 off the polyline.

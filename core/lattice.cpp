@@ -2,9 +2,8 @@
 
 #include "boundary.h"
 #include "field_hierarchy.h"
+#include "point_tree.h"
 #include "sampling.h"  // unitInterval
-
-#include <nanoflann.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -107,24 +106,11 @@ void smoothPositions(const FieldGraph& g, const LevelFrames& f, std::vector<Vec3
     }
 }
 
-struct PointCloud {
-    const std::vector<Vec3>* points;
-    size_t kdtree_get_point_count() const { return points->size(); }
-    double kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-    template <class BBox>
-    bool kdtree_get_bbox(BBox&) const { return false; }
-};
-using PointTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3, uint32_t>;
-
 }  // namespace
 
 Vec3 nearestLatticePoint(const Vec3& origin, const Vec3& d, const Vec3& n, double spacing, const Vec3& target)
 {
-    const Vec3 t = n.cross(d);
-    const Vec3 r = target - origin;
-    double a = 0, b = 0;
-    nearestInFrame(r.dot(d), r.dot(t), spacing, a, b);
-    return origin + spacing * ((a + 0.5 * b) * d + (rosy::kSin60 * b) * t);
+    return nearestWithFrame(origin, d, n.cross(d), spacing, target);
 }
 
 Vec3 middlePoint(const Vec3& p0, const Vec3& n0, const Vec3& p1, const Vec3& n1)
@@ -215,55 +201,66 @@ std::vector<Vec3> solveOnHierarchy(const FieldHierarchyLevels& h, const std::vec
     return origin;
 }
 
+// The lattice points of one face, from each of its corners' lattices (frames: level 0's): the
+// integer points of the corner's lattice coordinates that fall in the face projected on the
+// corner's tangent plane, each handed to `emit`. Where the three lattices agree the face gives
+// each point three times (merged by latticePoints); where they do not, the union still covers
+// the face.
+template <class Emit>
+void facePoints(const TriMesh& surface, int f, const LevelFrames& frames, const std::vector<Vec3>& origin, double rho,
+                Emit&& emit)
+{
+    constexpr double s = rosy::kSin60;
+    const Face& t = surface.faces[f];
+    for (int corner = 0; corner < 3; ++corner) {
+        const int v = t[corner];
+        const Vec3& o = origin[v];
+        const Vec3& d = frames.d[v];
+        const Vec3& tangent = frames.t[v];
+        // The face's corners in lattice coordinates (u, v) of this corner's lattice.
+        double u[3], w[3];
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 r = surface.vertices[t[k]] - o;
+            w[k] = r.dot(tangent) / (s * rho);
+            u[k] = r.dot(d) / rho - 0.5 * w[k];
+        }
+        const double area = (u[1] - u[0]) * (w[2] - w[0]) - (u[2] - u[0]) * (w[1] - w[0]);
+        if (!(std::abs(area) > 1e-12)) continue;  // the face is edge-on to this plane
+        const double tolerance = 1e-9 * std::abs(area);
+        const int u0 = static_cast<int>(std::ceil(std::min({u[0], u[1], u[2]}) - 1e-9));
+        const int u1 = static_cast<int>(std::floor(std::max({u[0], u[1], u[2]}) + 1e-9));
+        const int w0 = static_cast<int>(std::ceil(std::min({w[0], w[1], w[2]}) - 1e-9));
+        const int w1 = static_cast<int>(std::floor(std::max({w[0], w[1], w[2]}) + 1e-9));
+        for (int a = u0; a <= u1; ++a)
+            for (int b = w0; b <= w1; ++b) {
+                bool inside = true;
+                for (int k = 0; k < 3 && inside; ++k) {  // same side of each edge as the face
+                    const int k1 = (k + 1) % 3;
+                    const double side = (u[k1] - u[k]) * (b - w[k]) - (a - u[k]) * (w[k1] - w[k]);
+                    inside = area > 0 ? side >= -tolerance : side <= tolerance;
+                }
+                if (inside) emit(o + rho * ((a + 0.5 * b) * d + (s * b) * tangent));
+            }
+    }
+}
+
 // The lattice points over the surface, given each vertex's lattice origin.
-std::vector<Vec3> latticePoints(const TriMesh& surface, const DirectionField& field, const std::vector<Vec3>& origin,
+std::vector<Vec3> latticePoints(const TriMesh& surface, const LevelFrames& frames, const std::vector<Vec3>& origin,
                                 double rho, int* candidateCount)
 {
-    // Each face's lattice points, from each of its corners' lattices: the integer points of the
-    // corner's lattice coordinates that fall in the face projected on the corner's tangent
-    // plane. Where the three lattices agree the face gives each point three times (merged
-    // below); where they do not, the union still covers the face.
+    // Every face's points in face order (thread-count independent): counted first, then written
+    // at their face's offset, so no per-face container is allocated.
     const int faces = surface.faceCount();
-    std::vector<std::vector<Vec3>> perFace(faces);
-    constexpr double s = rosy::kSin60;
+    std::vector<int> first(faces + 1, 0);
+#pragma omp parallel for schedule(static)
+    for (int f = 0; f < faces; ++f) facePoints(surface, f, frames, origin, rho, [&](const Vec3&) { ++first[f + 1]; });
+    for (int f = 0; f < faces; ++f) first[f + 1] += first[f];
+    std::vector<Vec3> candidates(first[faces]);
 #pragma omp parallel for schedule(static)
     for (int f = 0; f < faces; ++f) {
-        const Face& t = surface.faces[f];
-        std::vector<Vec3>& out = perFace[f];
-        for (int corner = 0; corner < 3; ++corner) {
-            const int v = t[corner];
-            const Vec3& o = origin[v];
-            const Vec3& d = field.directions[v];
-            const Vec3& n = field.normals[v];
-            const Vec3 tangent = n.cross(d);
-            // The face's corners in lattice coordinates (u, v) of this corner's lattice.
-            double u[3], w[3];
-            for (int k = 0; k < 3; ++k) {
-                const Vec3 r = surface.vertices[t[k]] - o;
-                w[k] = r.dot(tangent) / (s * rho);
-                u[k] = r.dot(d) / rho - 0.5 * w[k];
-            }
-            const double area = (u[1] - u[0]) * (w[2] - w[0]) - (u[2] - u[0]) * (w[1] - w[0]);
-            if (!(std::abs(area) > 1e-12)) continue;  // the face is edge-on to this plane
-            const double tolerance = 1e-9 * std::abs(area);
-            const int u0 = static_cast<int>(std::ceil(std::min({u[0], u[1], u[2]}) - 1e-9));
-            const int u1 = static_cast<int>(std::floor(std::max({u[0], u[1], u[2]}) + 1e-9));
-            const int w0 = static_cast<int>(std::ceil(std::min({w[0], w[1], w[2]}) - 1e-9));
-            const int w1 = static_cast<int>(std::floor(std::max({w[0], w[1], w[2]}) + 1e-9));
-            for (int a = u0; a <= u1; ++a)
-                for (int b = w0; b <= w1; ++b) {
-                    bool inside = true;
-                    for (int k = 0; k < 3 && inside; ++k) {  // same side of each edge as the face
-                        const int k1 = (k + 1) % 3;
-                        const double side = (u[k1] - u[k]) * (b - w[k]) - (a - u[k]) * (w[k1] - w[k]);
-                        inside = area > 0 ? side >= -tolerance : side <= tolerance;
-                    }
-                    if (inside) out.push_back(o + rho * ((a + 0.5 * b) * d + (s * b) * tangent));
-                }
-        }
+        int next = first[f];
+        facePoints(surface, f, frames, origin, rho, [&](const Vec3& p) { candidates[next++] = p; });
     }
-    std::vector<Vec3> candidates;
-    for (const std::vector<Vec3>& points : perFace) candidates.insert(candidates.end(), points.begin(), points.end());
     if (candidateCount) *candidateCount = static_cast<int>(candidates.size());
 
     // Points of neighbouring faces that are the same lattice point (closer than ρ/2; distinct
@@ -326,7 +323,7 @@ std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& f
     double spacing = latticeSpacingFor(surface, count);
     for (r.passes = 1; r.passes <= params.maxPasses; ++r.passes) {
         int candidates = 0;
-        std::vector<Vec3> points = latticePoints(surface, field, solveOnHierarchy(h, frames, spacing, params.iterations, params.seed), spacing, &candidates);
+        std::vector<Vec3> points = latticePoints(surface, frames[0], solveOnHierarchy(h, frames, spacing, params.iterations, params.seed), spacing, &candidates);
         const double ratio = double(points.size()) / count;
         if (samples.empty() || std::abs(double(points.size()) - count) < std::abs(double(samples.size()) - count)) {
             samples.swap(points);

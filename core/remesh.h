@@ -70,12 +70,13 @@ struct RemeshParams {
     std::vector<Vec3> initialSamples;
     //! Start from the lattice points of the field-aligned position field (lattice.h) instead of
     //! random samples, when E_field is used with a uniform density, without feature lines
-    //! (there the start cut fandisk's creases) and no initialSamples are given. Random starts leave 5–7 pairs that neither the CVT nor the valence optimisation
-    //! removes (the cylinder at 1000 vertices kept 11 such pairs on a field without a
-    //! singularity); the lattice has none away from the field's singularities. Measured on the
-    //! nine rows of bench/side_by_side.py (README: the lattice start): Q_avg +0.002 to +0.016,
-    //! V6% up on 8 rows, the cylinder's interior all valence 6. The seed sets the lattice's phase
-    //! (LatticeParams::seed) and the field's random initial directions.
+    //! (there the start cut fandisk's creases) and no initialSamples are given. Random starts
+    //! leave 5–7 pairs that neither the CVT nor the valence optimisation removes (the cylinder
+    //! at 1000 vertices kept 11 such pairs on a field without a singularity); the lattice has
+    //! none away from the field's singularities. Measured over seeds 1–4 on the nine rows of
+    //! bench/side_by_side.py (README: the lattice start): mean Q_avg +0.004 to +0.010, the
+    //! lowest V6% up on every row, the cylinder's interior all valence 6. The seed sets the
+    //! lattice's phase (LatticeParams::seed) and the field's random initial directions.
     bool latticeStart = true;
     std::uint64_t seed = 1;        //!< seed of the initial sampling and of the field
     int threads = 0;               //!< OpenMP threads, 0 = runtime default
