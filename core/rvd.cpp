@@ -156,7 +156,9 @@ struct RawTriangle {
     int face;
 };
 
-struct ChunkOutput {
+// Cache-line aligned: neighbouring chunks and threads' scratch spaces are written by
+// different threads at once (vector ends, counters), and must not share lines.
+struct alignas(64) ChunkOutput {
     std::vector<CellPiece> pieces;
     std::vector<BorderPiece> borderPieces;
     std::vector<RvdEdge> edges;
@@ -177,7 +179,7 @@ struct ChunkOutput {
 };
 
 // Per-thread work space, reused across evaluations (no allocation in steady state).
-struct Scratch {
+struct alignas(64) Scratch {
     std::vector<int> stack;
     std::vector<int> visited;
     std::vector<uint32_t> extraIndex;
