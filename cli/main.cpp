@@ -3,6 +3,7 @@
 #include "arguments.h"
 #include "commands.h"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -78,11 +79,20 @@ void sleepWhileWaiting(char** argv)
     execv("/proc/self/exe", argv);  // returns only on failure: go on as we are
 }
 
+//! The heap grows and shrinks by 64 MB at a time instead of glibc's 128 kB: the optimisation
+//! allocates and frees buffers of a few hundred kB to a few MB every evaluation, and each
+//! shrink returned pages that the next evaluation faulted in again, zeroed by the kernel.
+//! Measured (issue 12, bunny 5000, 2 threads, 5 alternating whole commands): 15 900 minor page
+//! faults and a median of 1.58 s against 11 100 and 1.48 s. A process-wide setting, so the CLI
+//! makes it and the MeshLab plugin (a guest in MeshLab's process) does not.
+void keepHeapPadding() { mallopt(M_TOP_PAD, 64 << 20); }
+
 }  // namespace
 
 int main(int argc, char** argv)
 {
     sleepWhileWaiting(argv);
+    keepHeapPadding();
     try {
         return run(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const fieldcvt::cli::UsageError& e) {
