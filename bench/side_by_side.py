@@ -157,7 +157,7 @@ def main():
             with open(report) as f:
                 r = json.load(f)
             stages = " ".join(f"{k} {v:.2f}" for k, v in r["time_s"].items()
-                              if k not in ("total", "prepare", "features") and v >= 0.005)
+                              if k != "total" and v >= 0.005)
             line = f"| {name} {n} | {statistics.median(tf):.2f} | "
             if base_cmd:
                 with open(out_f, "rb") as f1, open(out_b, "rb") as f2:
