@@ -468,6 +468,7 @@ ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles
 
     closest_.resize(n);
     normal_.resize(n);
+#pragma omp parallel for schedule(static)
     for (int v = 0; v < n; ++v) {
         closest_[v] = surface.tree.closest(pos_[v]);
         normal_[v] = surfaceNormal(closest_[v]);
@@ -654,9 +655,21 @@ void ValenceOptimizer::ring(int v, Ring& r) const
     }
     if (static_cast<int>(r.faces.size()) != k) r.ok = false;
     // Repeated neighbours (two faces over the same edge on the same side) are not manifold.
-    std::vector<int> sorted = r.verts;
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) r.ok = false;
+    // Pairwise for the usual few neighbours (ring() runs for every candidate operation: no
+    // allocation), sorted for long ones.
+    const size_t m = r.verts.size();
+    if (m <= 16) {
+        for (size_t a = 1; a < m && r.ok; ++a)
+            for (size_t b = 0; b < a; ++b)
+                if (r.verts[a] == r.verts[b]) {
+                    r.ok = false;
+                    break;
+                }
+    } else {
+        std::vector<int> sorted = r.verts;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) r.ok = false;
+    }
 }
 
 void ValenceOptimizer::edgeFaces(int a, int b, std::vector<int>& out) const
