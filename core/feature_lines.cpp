@@ -237,6 +237,16 @@ std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, st
     const double ownSampleLength = 0.3;
     RvdOptions options;
     options.boundary = !border.empty();
+    // Without feature lines the free samples stay where the CVT iterations left them (the FCVT
+    // iterations move them next), and only the faces along the border are clipped, which is
+    // all the border's 1D cells need: 10 RVDs of the border faces instead of the whole surface
+    // (bunny 5000: this stage 0.090 -> 0.034 s). Measured over seeds 1-4 on the open rows
+    // (camelhead 3000, mask 4000, bunny 5000; cylinder 1000 the same figures): Q_avg within
+    // 0.0004 of moving them, V6 as high or higher (mask's lowest 97.5 -> 97.6 %), d_H's largest
+    // 1.45 / 0.37 / 0.72 -> 1.50 / 0.37 / 0.62 %. With feature lines they still move to their
+    // centroids, filling in behind the samples pulled onto the lines.
+    const bool moveFree = !features.segments.empty();
+    options.borderFacesOnly = !moveFree;
     constexpr size_t kCandidates = 16;
     for (int it = 0; it < iterations; ++it) {
         const RvdResult& rvd = energy.diagram(seeds, options);
@@ -254,7 +264,7 @@ std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, st
             } else if (firstPiece[size_t(i)] >= 0) {
                 role[size_t(i)] = SampleConstraint::Feature;
                 next[size_t(i)] = projectOnPiece(pieces[size_t(firstPiece[size_t(i)])], features.segments);
-            } else if (rvd.mass[size_t(i)] > 0) {
+            } else if (moveFree && rvd.mass[size_t(i)] > 0) {
                 next[size_t(i)] = rvd.moment[size_t(i)] / rvd.mass[size_t(i)];
             }
         }

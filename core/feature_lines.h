@@ -37,9 +37,10 @@ enum class SampleConstraint : char { Free, Border, Feature, Corner };
 //! The second stage (§5): `iterations` Lloyd-type steps in which a sample whose cell meets the
 //! open border moves to the centroid of the border inside its cell (projected on the border),
 //! a sample whose cell meets a feature line moves to the centroid of the feature curve inside its
-//! cell (projected on the line), the sample nearest to each corner sits on that corner, and the
-//! others move to their cell's centroid. Returns what each sample is; the caller freezes the
-//! constrained ones for the remaining (FCVT) iterations.
+//! cell (projected on the line), the sample nearest to each corner sits on that corner, and,
+//! where there are feature lines, the others move to their cell's centroid (without, they stay:
+//! only the border faces' part of the RVD is computed). Returns what each sample is; the caller
+//! freezes the constrained ones for the remaining (FCVT) iterations.
 std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
                                                       const TriMesh& surface, const std::vector<Segment>& border,
                                                       const FeatureLines& features, int iterations);

@@ -206,6 +206,7 @@ struct RestrictedVoronoiDiagram::Impl {
     std::vector<Face> faces;                 // per face, corners index `position`
     std::vector<Vec3> unitNormals;           // per face
     std::vector<unsigned char> borderEdges;  // per face: bit e set if edge e has no other face
+    std::vector<int> borderFaceVertices;     // the corners of the faces with a border edge, ascending
     std::vector<int> neighbourFace;          // per face edge (3f + e): the face across it, -1 if none or several
     std::vector<double> density;             // per face: ρ (empty: ρ = 1)
     std::vector<ChunkOutput> chunks;
@@ -314,6 +315,10 @@ struct RestrictedVoronoiDiagram::Impl {
             }
             r = q;
         }
+        for (int f = 0; f < static_cast<int>(faces.size()); ++f)
+            if (borderEdges[f]) borderFaceVertices.insert(borderFaceVertices.end(), faces[f].begin(), faces[f].end());
+        std::sort(borderFaceVertices.begin(), borderFaceVertices.end());
+        borderFaceVertices.erase(std::unique(borderFaceVertices.begin(), borderFaceVertices.end()), borderFaceVertices.end());
     }
 
     // A bound on the distance² of x_i's k-th nearest seed: the largest distance² to k other
@@ -570,10 +575,12 @@ struct RestrictedVoronoiDiagram::Impl {
         return static_cast<int>(idx[0]);
     }
 
-    void computeVertexSeeds()
+    // The nearest seed of every vertex, or (borderOnly) of the corners of the faces with a border
+    // edge only (the others are then left as they were and not read).
+    void computeVertexSeeds(bool borderOnly)
     {
-        const int n = static_cast<int>(position.size());
-        vertexSeed.resize(n);
+        vertexSeed.resize(position.size());
+        const int n = borderOnly ? static_cast<int>(borderFaceVertices.size()) : static_cast<int>(position.size());
         constexpr int kVerticesPerChunk = 1024;
         const int chunkCount = (n + kVerticesPerChunk - 1) / kVerticesPerChunk;
 #pragma omp parallel for schedule(dynamic, 1)
@@ -582,8 +589,9 @@ struct RestrictedVoronoiDiagram::Impl {
             int previous = -1;
             const int end = std::min(n, (c + 1) * kVerticesPerChunk);
             for (int k = c * kVerticesPerChunk; k < end; ++k) {
-                const int s = certifiedNearestSeed(previous, position[k]);
-                vertexSeed[k] = s;
+                const int v = borderOnly ? borderFaceVertices[k] : k;
+                const int s = certifiedNearestSeed(previous, position[v]);
+                vertexSeed[v] = s;
                 if (s >= 0) previous = s;
             }
         }
@@ -885,7 +893,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
     Impl& m = *impl_;
     m.seeds = &seeds;
     const int fromCandidates = m.buildNeighbourLists();
-    m.computeVertexSeeds();
+    m.computeVertexSeeds(options.borderFacesOnly);
 
     const int faceCount = static_cast<int>(m.faces.size());
     const int chunkCount = static_cast<int>(m.chunks.size());
@@ -898,7 +906,8 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
             ChunkOutput& out = m.chunks[c];
             out.clear();
             const int end = std::min(faceCount, (c + 1) * kTrianglesPerChunk);
-            for (int k = c * kTrianglesPerChunk; k < end; ++k) m.processTriangle(k, options, out, scratch);
+            for (int k = c * kTrianglesPerChunk; k < end; ++k)
+                if (!options.borderFacesOnly || m.borderEdges[k]) m.processTriangle(k, options, out, scratch);
         }
     }
 

@@ -18,6 +18,9 @@ struct RvdOptions {
     //! pieceTriangles).
     bool triangles = false;
     bool boundary = false;   //!< fill RvdResult::boundaryLength / boundaryMoment
+    //! Only the faces with a border edge (the cells' pieces elsewhere are skipped): the border
+    //! figures are complete, mass / moment / energy only cover those faces.
+    bool borderFacesOnly = false;
 };
 
 //! An RVD edge shared by the cells of seeds i < j, and its total length on the surface.

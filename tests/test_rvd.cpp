@@ -1,4 +1,5 @@
 // The exact restricted Voronoi diagram: invariants and a case with a known answer.
+#include "boundary.h"
 #include "rvd.h"
 #include "sampling.h"
 #include "test_meshes.h"
@@ -110,6 +111,31 @@ TEST(Rvd, CoincidentSeedsAreNotCountedTwice)
     rvd.compute(seeds, RvdOptions{}, result);
     EXPECT_NEAR(sum(result.mass), surfaceArea(surface), 1e-9 * surfaceArea(surface));
     EXPECT_EQ(result.mass.back(), 0.0);
+}
+
+TEST(Rvd, BorderLengthsFromTheBorderFacesAloneAreTheWholeDiagrams)
+{
+    // The border's 1D cells partition the border (their lengths sum to its length), and the
+    // border-faces-only diagram (the border relaxation's) gives them bit for bit, while its
+    // masses cover only the border faces.
+    const TriMesh surface = testmesh::disk(12);
+    double borderLength = 0;
+    for (const Segment& s : boundarySegments(surface)) borderLength += (s.second - s.first).norm();
+    ASSERT_GT(borderLength, 0);
+    const std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 120, 4);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdOptions options;
+    options.boundary = true;
+    RvdResult whole, border;
+    rvd.compute(seeds, options, whole);
+    options.borderFacesOnly = true;
+    rvd.compute(seeds, options, border);
+    EXPECT_NEAR(sum(whole.boundaryLength), borderLength, 1e-9 * borderLength);
+    EXPECT_EQ(border.boundaryLength, whole.boundaryLength);
+    ASSERT_EQ(border.boundaryMoment.size(), whole.boundaryMoment.size());
+    for (size_t i = 0; i < seeds.size(); ++i) EXPECT_EQ(border.boundaryMoment[i], whole.boundaryMoment[i]) << i;
+    EXPECT_GT(sum(border.mass), 0.0);
+    EXPECT_LT(sum(border.mass), 0.5 * sum(whole.mass));
 }
 
 TEST(Rvd, ResultDoesNotDependOnThreadCount)
