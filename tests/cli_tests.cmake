@@ -122,3 +122,12 @@ add_test(NAME cli_progress
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_progress.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}
           ${FCVT_CLI_WORK}/progress)
 set_tests_properties(cli_progress PROPERTIES LABELS "cli" TIMEOUT 600)
+
+# Issue 12: idle OpenMP threads sleep (OMP_WAIT_POLICY=PASSIVE, set before libgomp loads, without
+# running the command a second time) unless the user chose a wait policy.
+add_test(NAME cli_idle_threads_sleep
+  COMMAND ${CMAKE_COMMAND} -E env --unset=OMP_WAIT_POLICY --unset=GOMP_SPINCOUNT OMP_DISPLAY_ENV=true $<TARGET_FILE:fcvt> --version)
+set_tests_properties(cli_idle_threads_sleep PROPERTIES PASS_REGULAR_EXPRESSION "OMP_WAIT_POLICY = 'PASSIVE'")
+add_test(NAME cli_wait_policy_chosen_by_user_kept
+  COMMAND ${CMAKE_COMMAND} -E env OMP_WAIT_POLICY=ACTIVE OMP_DISPLAY_ENV=true $<TARGET_FILE:fcvt> --version)
+set_tests_properties(cli_wait_policy_chosen_by_user_kept PROPERTIES PASS_REGULAR_EXPRESSION "OMP_WAIT_POLICY = 'ACTIVE'")
