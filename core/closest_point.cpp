@@ -415,7 +415,7 @@ double SurfaceWalk::distanceBound(const Vec3& p, int startFace, int* endFace) co
     return std::sqrt(local.squaredDistance);
 }
 
-ClosestPoint SurfaceWalk::closestFrom(const Vec3& p, int startFace, bool* settled) const
+ClosestPoint SurfaceWalk::closestFrom(const Vec3& p, int startFace, bool* settled, bool throughFaces) const
 {
     ClosestPoint result;
     result.point = p;
@@ -437,7 +437,7 @@ ClosestPoint SurfaceWalk::closestFrom(const Vec3& p, int startFace, bool* settle
         // On the edge opposite a zero barycentric coordinate the face across it may hold a
         // nearer point; on a corner (two zeros), any face around that vertex.
         const int zeros = (bary[0] == 0.0) + (bary[1] == 0.0) + (bary[2] == 0.0);
-        if (zeros == 0) {  // inside the face: the nearest point of its neighbourhood
+        if (zeros == 0 && !throughFaces) {  // inside the face: the nearest point of its neighbourhood
             stopped = true;
             break;
         }
@@ -449,7 +449,9 @@ ClosestPoint SurfaceWalk::closestFrom(const Vec3& p, int startFace, bool* settle
             const double d2 = distance2(g, candidateBary, candidatePoint);
             if (d2 < next2) next = g, next2 = d2, nextBary = candidateBary, nextPoint = candidatePoint;
         };
-        if (zeros == 1) {
+        if (zeros == 0) {  // where the surface is concave, a face across an edge may be nearer
+            for (int k = 0; k < 3; ++k) consider(across_[3 * face + k]);
+        } else if (zeros == 1) {
             for (int k = 0; k < 3; ++k)
                 if (bary[k] == 0.0) consider(across_[3 * face + (k + 1) % 3]);
         } else {

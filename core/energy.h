@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace fieldcvt {
@@ -71,7 +72,9 @@ public:
     //! The field frames at `points` (their closest points on the surface).
     FieldFrames framesAt(const std::vector<Vec3>& points) const;
     //! The same; `faces` holds a hint per point (the face of a nearby answer, or -1) and
-    //! receives the face of each closest point.
+    //! receives the face of each answer. With a hint the answer is the nearest point of the
+    //! surface around it (SurfaceWalk: the closest point unless another sheet comes nearer),
+    //! the closest point where that walk does not settle or there is no hint.
     FieldFrames framesAt(const std::vector<Vec3>& points, std::vector<int>& faces) const;
 
     //! The RVD of the last evaluate() / diagram() call.
@@ -94,6 +97,7 @@ private:
     //! Per sample, the face of its closest point at the previous evaluation: samples move
     //! little between evaluations, so it bounds the next closest-point search (same answer).
     std::vector<int> frameFaces_;
+    std::unique_ptr<SurfaceWalk> walk_;  //!< on surface_, with a field: the frames' projections
     Eigen::VectorXd fieldGradient_;
     int evaluations_ = 0;
 };
