@@ -81,14 +81,15 @@ FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& n
 }
 
 DirectionField solveWithConstraints(const TriMesh& mesh, std::vector<Vec3> normals, const FieldConstraints& constraints,
-                                    std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic = false)
+                                    std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic = false,
+                                    FieldHierarchyLevels* hierarchy = nullptr)
 {
     DirectionField field;
     if (constraints.count() == mesh.vertexCount()) {
         field.directions = constraints.directions;  // nothing left to smooth
         if (report) *report = FieldReport{};
     } else {
-        field.directions = solveField(mesh, normals, constraints, seed, std::max(iterations, 0), report, intrinsic);
+        field.directions = solveField(mesh, normals, constraints, seed, std::max(iterations, 0), report, intrinsic, hierarchy);
     }
     if (report) report->constrainedVertices = constraints.count();
     field.normals = std::move(normals);
@@ -160,7 +161,7 @@ constexpr double kLongBorder = 2.0;
 
 }  // namespace
 
-DirectionField computeField(const TriMesh& mesh, const FieldParams& params, FieldReport* report)
+DirectionField computeField(const TriMesh& mesh, const FieldParams& params, FieldReport* report, FieldHierarchyLevels* hierarchy)
 {
     checkMesh(mesh);
     std::vector<Vec3> normals = vertexNormals(mesh);
@@ -181,7 +182,7 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params, Fiel
         const bool intrinsic = params.smoothness == FieldSmoothness::Intrinsic ||
                                (params.smoothness == FieldSmoothness::Auto && longBorder);
         return solveWithConstraints(mesh, std::move(normals), constraints, params.seed, params.smoothingIterations, report,
-                                    intrinsic);
+                                    intrinsic, hierarchy);
     }
     case FieldSource::CurvatureMax:
     case FieldSource::CurvatureMin: {

@@ -78,8 +78,13 @@ struct FieldReport {
     int umbilicVertices = 0;
 };
 
+struct FieldHierarchyLevels;
+
 //! As above, and fills `report` (the energy traces cost extra time; pass nullptr to skip).
-DirectionField computeField(const TriMesh& mesh, const FieldParams& params, FieldReport* report);
+//! `hierarchy` (if given, extrinsic source) receives the hierarchy the field was smoothed on,
+//! left empty when nothing was smoothed (every direction prescribed).
+DirectionField computeField(const TriMesh& mesh, const FieldParams& params, FieldReport* report,
+                            FieldHierarchyLevels* hierarchy = nullptr);
 
 //! Builds a field from user vectors per vertex: each is projected on the tangent plane of the
 //! vertex normal and normalised. Throws InvalidInputError on a size mismatch or a non-finite

@@ -337,9 +337,10 @@ void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<un
 }
 
 std::vector<Vec3> solveField(const TriMesh& mesh, const std::vector<Vec3>& normals, const FieldConstraints& constraints,
-                             std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic)
+                             std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic,
+                             FieldHierarchyLevels* hierarchy)
 {
-    const FieldHierarchyLevels h = buildFieldHierarchy(mesh, normals);
+    FieldHierarchyLevels h = buildFieldHierarchy(mesh, normals);
     const int levels = static_cast<int>(h.levels.size());
     const int n = mesh.vertexCount();
 
@@ -419,6 +420,7 @@ std::vector<Vec3> solveField(const TriMesh& mesh, const std::vector<Vec3>& norma
         for (int v = 0; v < fine.vertexCount(); ++v)
             if (!fixed[l - 1][v]) normalisedTangent(dirs[l][parent[v]], fine.normals[v], dirs[l - 1][v]);
     }
+    if (hierarchy) *hierarchy = std::move(h);
     return dirs[0];
 }
 

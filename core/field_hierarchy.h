@@ -141,8 +141,11 @@ void smoothLevel(const FieldGraph& graph, std::vector<Vec3>& directions, const s
 //! smooth, prolongate (project the parent's direction on the child's tangent plane).
 //! Constrained vertices (and coarse vertices containing one) keep their direction. `intrinsic`
 //! selects the energy of every level (smoothLevel); the report's energies are that energy.
+//! `hierarchy` (if given) receives the hierarchy the field was solved on (buildFieldHierarchy of
+//! mesh and normals), for the lattice start to reuse.
 std::vector<Vec3> solveField(const TriMesh& mesh, const std::vector<Vec3>& normals, const FieldConstraints& constraints,
-                             std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic = false);
+                             std::uint64_t seed, int iterations, FieldReport* report, bool intrinsic = false,
+                             FieldHierarchyLevels* hierarchy = nullptr);
 
 //! The 6-RoSy-compatible average of tangent directions at a vertex of normal n: each next one
 //! is added as its representative closest to the running sum. Returns false when it vanishes.

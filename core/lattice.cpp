@@ -312,9 +312,12 @@ std::vector<Vec3> solvePositionField(const TriMesh& surface, const DirectionFiel
 }
 
 std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& field, int count, const LatticeParams& params,
-                                 LatticeReport* report)
+                                 LatticeReport* report, const FieldHierarchyLevels* hierarchy)
 {
-    const FieldHierarchyLevels h = buildFieldHierarchy(surface, field.normals);
+    FieldHierarchyLevels built;
+    const bool reuse = hierarchy && !hierarchy->levels.empty() && hierarchy->levels[0].vertexCount() == surface.vertexCount();
+    if (!reuse) built = buildFieldHierarchy(surface, field.normals);
+    const FieldHierarchyLevels& h = reuse ? *hierarchy : built;
     const std::vector<LevelFrames> frames = framesOnLevels(h, field);
     LatticeReport local;
     LatticeReport& r = report ? *report : local;

@@ -16,6 +16,8 @@
 
 namespace fieldcvt {
 
+struct FieldHierarchyLevels;
+
 struct LatticeParams {
     //! Gauss–Seidel sweeps of the position field per hierarchy level: 4 and 8 gave the same
     //! figures within the seeds' spread (README: the lattice start), 4 in half the time.
@@ -61,7 +63,9 @@ double latticeSpacingFor(const TriMesh& surface, int count);
 //! more than params.countTolerance): each face's points, taken from its corners' lattices,
 //! with those that coincide (closer than half the spacing) merged into one. The points lie on
 //! the corners' tangent planes, not yet on the surface.
+//! `hierarchy`: buildFieldHierarchy(surface, field.normals) if the caller has it (computeField
+//! hands it out), else null and it is built here.
 std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& field, int count, const LatticeParams& params,
-                                 LatticeReport* report = nullptr);
+                                 LatticeReport* report = nullptr, const FieldHierarchyLevels* hierarchy = nullptr);
 
 }  // namespace fieldcvt

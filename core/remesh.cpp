@@ -3,6 +3,7 @@
 #include "closest_point.h"
 #include "energy.h"
 #include "field.h"
+#include "field_hierarchy.h"
 #include "density.h"
 #include "errors.h"
 #include "mesh_check.h"
@@ -248,6 +249,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     EnergyFunction energy(optSurface, rho);
     ClosestPointTree tree(optSurface);
     DirectionField field;
+    FieldHierarchyLevels fieldHierarchy;  // the field's, for the lattice start (freed after it)
     std::string stage = "sampling";
     double best = std::numeric_limits<double>::infinity();
     std::string stepStage;  // the stage whose steps `steps` counts (shown as "cvt 12/65")
@@ -289,7 +291,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                 fieldParams.seed = params.seed;
                 // The field follows the same creases the samples are snapped to (§5).
                 if (params.featureAngleDegrees > 0) fieldParams.sharpAngle = params.featureAngleDegrees;
-                field = computeField(optSurface, fieldParams);
+                field = computeField(optSurface, fieldParams, nullptr, &fieldHierarchy);
             }
             result.singularities = findSingularities(optSurface, field);
             for (Singularity& s : result.singularities) s.position = frame.fromWork(s.position);
@@ -303,10 +305,11 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             // The field-aligned lattice (lattice.h) on the optimisation surface, put on it.
             LatticeParams lattice;
             lattice.seed = params.seed;
-            seeds = latticeSamples(optSurface, field, params.vertexCount, lattice, &result.lattice);
+            seeds = latticeSamples(optSurface, field, params.vertexCount, lattice, &result.lattice, &fieldHierarchy);
 #pragma omp parallel for schedule(static)
             for (int i = 0; i < static_cast<int>(seeds.size()); ++i) seeds[i] = tree.closest(seeds[i]).point;
             result.lattice.spacing /= frame.scale;  // reported in input units
+            fieldHierarchy = FieldHierarchyLevels{};
         } else if (params.initialSamples.empty()) {
             seeds = sampleSurface(optSurface, params.vertexCount, params.seed, rho);  // uniform when rho is empty
         } else {
