@@ -78,32 +78,41 @@ void smoothPositions(const FieldGraph& g, const LevelFrames& f, std::vector<Vec3
     // every class ends with a barrier): bunny 5000's finest level (10 108 vertices, 6 classes)
     // solves in 35 ms on 2 threads against 49 ms on one; 1024 per class gave 40 ms.
     const bool parallel = colours > 0 && n / colours >= 256;
+    // The running weighted mean of Jakob et al.'s update: each neighbour j moves i's lattice by
+    // the offset between the two lattices' points nearest to the edge's middle point (where
+    // both lattices are meant to agree), weighted like the orientation field's edges.
+    auto edgeStep = [&](int i, int e, Vec3& current, double& weightSum) {
+        const int j = g.neighbours[e];
+        const Vec3 mine = nearestWithFrame(current, f.d[i], f.t[i], spacing, f.middle[e]);
+        // j's point nearest to mine, not to the middle: near a tie the two lattices would
+        // otherwise pick different points and see a whole lattice step.
+        const Vec3 theirs = nearestWithFrame(origin[j], f.d[j], f.t[j], spacing, mine);
+        const double w = g.weights[e];
+        current += (w / (weightSum + w)) * (theirs - mine);
+        weightSum += w;
+        current -= g.normals[i].dot(current - g.positions[i]) * g.normals[i];  // back on i's tangent plane
+    };
 #pragma omp parallel if (parallel)
     for (int it = 0; it < iterations; ++it) {
         for (int c = 0; c < colours; ++c) {
+            // Two vertices of the class at a time, their edges in lockstep: each update is a
+            // chain of dependent steps, and two independent chains keep the core busier. Each
+            // vertex's own steps (and so the result) are those of one at a time.
+            const int first = g.colourOffsets[c], count = g.colourOffsets[c + 1] - first;
 #pragma omp for schedule(static)
-            for (int k = g.colourOffsets[c]; k < g.colourOffsets[c + 1]; ++k) {
-                const int i = g.colourVertices[k];
-                const Vec3& xi = g.positions[i];
-                const Vec3& ni = g.normals[i];
-                // The running weighted mean of Jakob et al.'s update: each neighbour j moves i's
-                // lattice by the offset between the two lattices' points nearest to the edge's
-                // middle point (where both lattices are meant to agree), weighted like the
-                // orientation field's edges.
-                Vec3 current = origin[i];
-                double weightSum = 0;
-                for (int e = g.offsets[i]; e < g.offsets[i + 1]; ++e) {
-                    const int j = g.neighbours[e];
-                    const Vec3 mine = nearestWithFrame(current, f.d[i], f.t[i], spacing, f.middle[e]);
-                    // j's point nearest to mine, not to the middle: near a tie the two lattices
-                    // would otherwise pick different points and see a whole lattice step.
-                    const Vec3 theirs = nearestWithFrame(origin[j], f.d[j], f.t[j], spacing, mine);
-                    const double w = g.weights[e];
-                    current += (w / (weightSum + w)) * (theirs - mine);
-                    weightSum += w;
-                    current -= ni.dot(current - xi) * ni;  // back on i's tangent plane
+            for (int p = 0; p < (count + 1) / 2; ++p) {
+                const int a = g.colourVertices[first + 2 * p];
+                const int b = 2 * p + 1 < count ? g.colourVertices[first + 2 * p + 1] : -1;
+                Vec3 currentA = origin[a], currentB = b >= 0 ? origin[b] : Vec3::Zero();
+                double sumA = 0, sumB = 0;
+                int ea = g.offsets[a], eb = b >= 0 ? g.offsets[b] : 0;
+                const int endA = g.offsets[a + 1], endB = b >= 0 ? g.offsets[b + 1] : 0;
+                while (ea < endA || eb < endB) {
+                    if (ea < endA) edgeStep(a, ea++, currentA, sumA);
+                    if (eb < endB) edgeStep(b, eb++, currentB, sumB);
                 }
-                origin[i] = nearestWithFrame(current, f.d[i], f.t[i], spacing, xi);
+                origin[a] = nearestWithFrame(currentA, f.d[a], f.t[a], spacing, g.positions[a]);
+                if (b >= 0) origin[b] = nearestWithFrame(currentB, f.d[b], f.t[b], spacing, g.positions[b]);
             }
         }
     }
