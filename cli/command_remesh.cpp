@@ -72,7 +72,8 @@ void printUsage()
         "  --time-limit SEC      stop optimising after SEC seconds and write the best result so far,\n"
         "                        with a warning (default 0: no limit)\n"
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
-        "                        history, field singularities, valence optimisation, repair, warnings\n"
+        "                        history, field singularities (looked for only then), valence\n"
+        "                        optimisation, repair, warnings\n"
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise); without --report, d_RMS and d_H are then\n"
         "                        not computed (nothing would show them)\n"
@@ -190,6 +191,7 @@ int runRemesh(const std::vector<std::string>& args)
     // The distances (dense sampling of both meshes: 0.05-0.26 s on the benchmark rows) are
     // only ever printed or reported; the quality figures and the topology check stay.
     if (quiet && !a.has("report")) params.computeDistances = false;
+    params.computeSingularities = a.has("report");  // only the report lists them
     if (params.fieldSource == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
                          inPath + " is not a .ply file");

@@ -293,7 +293,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                 if (params.featureAngleDegrees > 0) fieldParams.sharpAngle = params.featureAngleDegrees;
                 field = computeField(optSurface, fieldParams, nullptr, &fieldHierarchy);
             }
-            result.singularities = findSingularities(optSurface, field);
+            if (params.computeSingularities) result.singularities = findSingularities(optSurface, field);
             for (Singularity& s : result.singularities) s.position = frame.fromWork(s.position);
         });
     }
