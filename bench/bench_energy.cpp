@@ -14,6 +14,7 @@
 #include "remesh.h"
 #include "rvd.h"
 #include "sampling.h"
+#include "simplify.h"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -347,6 +348,75 @@ void BM_DistanceFertility3000(benchmark::State& state)
 BENCHMARK(BM_DistanceFertility3000)
     ->Args({1, 200000})->Args({1, 50000})->Args({2, 200000})->Args({2, 50000})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The simplification stage (one thread: it is serial) on bunny.obj at the working scale of
+// 5000 samples, to the 20 000 faces the default pipeline optimises on.
+void BM_SimplifyBunny5000(benchmark::State& state)
+{
+    const BunnySetup& setup = bunny5000();
+    SimplifyParams params;
+    params.targetFaces = 4 * 5000;
+    params.maxError = 0.05;
+    for (auto _ : state) benchmark::DoNotOptimize(simplifyMesh(setup.surface, params).mesh.faces.size());
+}
+BENCHMARK(BM_SimplifyBunny5000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The border relaxation's diagram on mask.off (an open surface) at 4000 samples, 2 threads:
+// Arg 0 every face clipped (as when it also moved the free samples), 1 only the faces along
+// the border (RvdOptions::borderFacesOnly: the same border lengths and moments).
+void BM_BorderDiagramMask4000(benchmark::State& state)
+{
+    struct MaskSetup {
+        TriMesh surface;
+        std::vector<Vec3> seeds;
+        MaskSetup()
+        {
+            InputReport report;
+            surface = prepareInput(readMesh(std::string(FCVT_RESOURCES_DIR) + "/mask.off"), report);
+            const double scale = std::sqrt(4000 / surfaceArea(surface));
+            for (Vec3& p : surface.vertices) p *= scale;
+            seeds = sampleSurfaceUniform(surface, 4000, 1);
+            EnergyFunction energy(surface);
+            lloydRelaxation(energy, surface, seeds, 5, 1);
+        }
+    };
+    static const MaskSetup setup;
+    omp_set_num_threads(2);
+    RestrictedVoronoiDiagram rvd(setup.surface);
+    RvdResult result;
+    RvdOptions options;
+    options.boundary = true;
+    options.borderFacesOnly = state.range(0) == 1;
+    for (auto _ : state) {
+        rvd.compute(setup.seeds, options, result);
+        benchmark::DoNotOptimize(result.boundaryLength.data());
+    }
+}
+BENCHMARK(BM_BorderDiagramMask4000)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// E_field's frames at the bunny's 5000 samples, moved a little between calls as in L-BFGS, 2
+// threads: Arg 0 a closest-point tree query per sample (no hints), 1 from the previous call's
+// faces by a walk over the surface (EnergyFunction::framesAt with hints, what evaluate() does).
+void BM_FieldFramesBunny5000(benchmark::State& state)
+{
+    const BunnySetup& setup = bunny5000();
+    static const DirectionField field = computeField(setup.surface, FieldParams{});
+    static const ClosestPointTree tree(setup.surface);
+    omp_set_num_threads(2);
+    EnergyFunction energy(setup.surface);
+    energy.setField(&field, &tree, 0.002);
+    std::vector<Vec3> points = setup.seeds;
+    std::vector<int> faces;
+    energy.framesAt(points, faces);
+    int step = 0;
+    for (auto _ : state) {
+        const double shift = (step++ % 2 ? -0.02 : 0.02);
+        for (size_t i = 0; i < points.size(); ++i) points[i] = setup.seeds[i] + Vec3(shift, -shift, shift);
+        if (state.range(0) == 0) benchmark::DoNotOptimize(energy.framesAt(points).normals.data());
+        else benchmark::DoNotOptimize(energy.framesAt(points, faces).normals.data());
+    }
+}
+BENCHMARK(BM_FieldFramesBunny5000)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The whole pipeline: Arg 1 the threads, Arg 2 the schedule (0: the defaults, 10 Lloyd + 10 CVT
 // + 40 FCVT iterations with look-ahead 8; 1: the paper's fixed schedule after 30 Lloyd steps,
