@@ -225,7 +225,7 @@ Vec3 projectOnPiece(const CurvePiece& piece, const std::vector<Segment>& segment
 
 std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
                                                       const TriMesh& surface, const std::vector<Segment>& border,
-                                                      const FeatureLines& features, int iterations)
+                                                      const FeatureLines& features, int iterations, bool iterationsFollow)
 {
     std::vector<SampleConstraint> role(seeds.size(), SampleConstraint::Free);
     if (border.empty() && features.empty()) return role;
@@ -245,7 +245,10 @@ std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, st
     // 0.0004 of moving them, V6 as high or higher (mask's lowest 97.5 -> 97.6 %), d_H's largest
     // 1.45 / 0.37 / 0.72 -> 1.50 / 0.37 / 0.62 %. With feature lines they still move to their
     // centroids, filling in behind the samples pulled onto the lines.
-    const bool moveFree = !features.segments.empty();
+    // When nothing follows (no FCVT iterations: a pure CVT run), the free samples move here as
+    // before, or the ones next to the border would keep the gaps the border samples left
+    // (bunny 5000, λ = 0 and 130 CVT iterations: d_H 0.61 % staying, within 0.6 % moving).
+    const bool moveFree = !features.segments.empty() || !iterationsFollow;
     options.borderFacesOnly = !moveFree;
     constexpr size_t kCandidates = 16;
     for (int it = 0; it < iterations; ++it) {

@@ -38,12 +38,14 @@ enum class SampleConstraint : char { Free, Border, Feature, Corner };
 //! open border moves to the centroid of the border inside its cell (projected on the border),
 //! a sample whose cell meets a feature line moves to the centroid of the feature curve inside its
 //! cell (projected on the line), the sample nearest to each corner sits on that corner, and,
-//! where there are feature lines, the others move to their cell's centroid (without, they stay:
-//! only the border faces' part of the RVD is computed). Returns what each sample is; the caller
-//! freezes the constrained ones for the remaining (FCVT) iterations.
+//! where there are feature lines or `iterationsFollow` is false, the others move to their cell's
+//! centroid (else they stay for the iterations that follow to move: only the border faces' part
+//! of the RVD is computed). Returns what each sample is; the caller freezes the constrained ones
+//! for the remaining (FCVT) iterations.
 std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
                                                       const TriMesh& surface, const std::vector<Segment>& border,
-                                                      const FeatureLines& features, int iterations);
+                                                      const FeatureLines& features, int iterations,
+                                                      bool iterationsFollow = true);
 
 //! One connected piece of the feature lines inside one sample's cell (its 1D restricted
 //! Voronoi cell can have several: two lines that pass close to each other).

@@ -343,7 +343,8 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         // Second stage of §5: samples on the border and on feature lines, held there from now on.
         pipeline.run("features", [&] {
             stage = "features";
-            sampleRoles = relaxConstrainedSamples(energy, seeds, optSurface, border, features, params.boundaryIterations);
+            sampleRoles = relaxConstrainedSamples(energy, seeds, optSurface, border, features, params.boundaryIterations,
+                                                  params.fcvtIterations > 0);
             std::vector<char> frozen(seeds.size(), 0);
             for (size_t i = 0; i < seeds.size(); ++i) frozen[i] = sampleRoles[i] != SampleConstraint::Free;
             energy.setFrozen(std::move(frozen));
