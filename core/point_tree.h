@@ -1,7 +1,7 @@
 #pragma once
 // A nanoflann kd-tree over a vector of points (the adaptor nanoflann asks for), shared by the
-// stages that look up nearby points: feature lines (seeds near a curve) and the lattice start
-// (coinciding lattice points).
+// stages that look up nearby points: the RVD (each seed's nearest seeds), feature lines (seeds
+// near a curve) and the lattice start (coinciding lattice points).
 #include "mesh.h"
 
 #include <nanoflann.hpp>

@@ -2,9 +2,9 @@
 
 #include "closest_point.h"
 #include "errors.h"
+#include "point_tree.h"
 
 #include <Eigen/Geometry>
-#include <nanoflann.hpp>
 #include <omp.h>
 
 #include <algorithm>
@@ -52,16 +52,6 @@ std::vector<int> mortonIndexOrder(const std::vector<Vec3>& points)
 }
 
 namespace {
-
-// nanoflann adaptor over the seed array.
-struct SeedCloud {
-    const std::vector<Vec3>* points = nullptr;
-    size_t kdtree_get_point_count() const { return points->size(); }
-    double kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-    template <class BBox>
-    bool kdtree_get_bbox(BBox&) const { return false; }
-};
-using SeedTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SeedCloud>, SeedCloud, 3, uint32_t>;
 
 // nanoflann's k-nearest result set with a known upper bound on the k-th distance: subtrees
 // beyond it are skipped from the start. The answer is the same as without the bound as long as
@@ -214,14 +204,14 @@ struct RestrictedVoronoiDiagram::Impl {
 
     // Per evaluation.
     const std::vector<Vec3>* seeds = nullptr;
-    SeedCloud cloud;
+    PointCloud cloud;  // the seeds, for their k-d tree (point_tree.h)
     // The k-d tree of the seeds, built on first use in an evaluation: with the candidate lists
     // most evaluations need it only for rare fallbacks (0.8 ms of ~15 for bunny 5000).
-    mutable std::unique_ptr<SeedTree> tree;
+    mutable std::unique_ptr<PointTree> tree;
     mutable std::unique_ptr<std::once_flag> treeBuilt;
-    const SeedTree& seedTree() const
+    const PointTree& seedTree() const
     {
-        std::call_once(*treeBuilt, [this] { tree = std::make_unique<SeedTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)); });
+        std::call_once(*treeBuilt, [this] { tree = std::make_unique<PointTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)); });
         return *tree;
     }
     std::vector<uint32_t> neighbourIndex;  // n * kStoredNeighbours, nearest first, self excluded
