@@ -291,7 +291,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                 fieldParams.seed = params.seed;
                 // The field follows the same creases the samples are snapped to (§5).
                 if (params.featureAngleDegrees > 0) fieldParams.sharpAngle = params.featureAngleDegrees;
-                field = computeField(optSurface, fieldParams, nullptr, &fieldHierarchy);
+                field = computeField(optSurface, fieldParams, nullptr, latticeStart ? &fieldHierarchy : nullptr);
             }
             if (params.computeSingularities) result.singularities = findSingularities(optSurface, field);
             for (Singularity& s : result.singularities) s.position = frame.fromWork(s.position);

@@ -655,21 +655,10 @@ void ValenceOptimizer::ring(int v, Ring& r) const
     }
     if (static_cast<int>(r.faces.size()) != k) r.ok = false;
     // Repeated neighbours (two faces over the same edge on the same side) are not manifold.
-    // Pairwise for the usual few neighbours (ring() runs for every candidate operation: no
-    // allocation), sorted for long ones.
-    const size_t m = r.verts.size();
-    if (m <= 16) {
-        for (size_t a = 1; a < m && r.ok; ++a)
-            for (size_t b = 0; b < a; ++b)
-                if (r.verts[a] == r.verts[b]) {
-                    r.ok = false;
-                    break;
-                }
-    } else {
-        std::vector<int> sorted = r.verts;
-        std::sort(sorted.begin(), sorted.end());
-        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) r.ok = false;
-    }
+    // Pairwise: a ring has a few neighbours, and ring() runs for every candidate operation (no
+    // allocation).
+    for (size_t a = 1; a < r.verts.size() && r.ok; ++a)
+        r.ok = std::find(r.verts.begin(), r.verts.begin() + a, r.verts[a]) == r.verts.begin() + a;
 }
 
 void ValenceOptimizer::edgeFaces(int a, int b, std::vector<int>& out) const
