@@ -1,5 +1,6 @@
 #include "energy.h"
 
+#include "errors.h"
 #include "interpolation.h"
 
 #include <cmath>
@@ -113,13 +114,18 @@ FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points) const
 
 FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vector<int>& faces) const
 {
+    // Queries in Morton order: consecutive ones walk the same branches of the tree (cache).
+    return framesAt(points, faces, mortonIndexOrder(points));
+}
+
+FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vector<int>& faces, const std::vector<int>& order) const
+{
     FieldFrames frames;
     frames.normals.resize(points.size());
     frames.directions.resize(points.size());
     if (!field_ || !tree_) return frames;
+    if (order.size() != points.size()) throw InvalidInputError("framesAt: the query order does not match the points");
     faces.resize(points.size(), -1);
-    // Queries in Morton order: consecutive ones walk the same branches of the tree (cache).
-    const std::vector<int> order = mortonIndexOrder(points);
 #pragma omp parallel for schedule(static)
     for (long long k = 0; k < static_cast<long long>(points.size()); ++k) {
         const int i = order[k];
@@ -160,7 +166,8 @@ EnergyValue EnergyFunction::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& 
     }
     if (field_) {
         // Frames and weights are frozen for this evaluation (appendix).
-        frames_ = framesAt(seeds_, frameFaces_);
+        if (frameOrder_.size() != seeds_.size()) frameOrder_ = mortonIndexOrder(seeds_);
+        frames_ = framesAt(seeds_, frameFaces_, frameOrder_);
         if (lambda_ > 0) {
             fieldGradient_.setZero(x.size());
             value.field = fieldEnergy(seeds_, rvd_.edges, frames_, &fieldGradient_);

@@ -929,21 +929,23 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
                 result.boundaryMoment[p.seed] += p.moment;
             }
         result.clippedPolygons += out.clipped;
-        if (options.edges) result.edges.insert(result.edges.end(), out.edges.begin(), out.edges.end());
     }
     if (options.edges) {
         // Sum the pieces of each shared edge (an RVD edge crosses several input triangles):
-        // bucket the pieces by their first seed (counting sort, chunk order kept), then merge
-        // each seed's few pieces by second seed. Linear time and deterministic.
+        // bucket the pieces by their first seed (counting sort straight from the chunks, chunk
+        // order kept), then merge each seed's few pieces by second seed, then gather the merged
+        // buckets in parallel. Linear time and deterministic.
         std::vector<int>& start = m.edgeStart;
         start.assign(n + 1, 0);
-        for (const RvdEdge& e : result.edges) ++start[e.i + 1];
+        for (const ChunkOutput& out : m.chunks)
+            for (const RvdEdge& e : out.edges) ++start[e.i + 1];
         for (size_t i = 0; i < n; ++i) start[i + 1] += start[i];
         std::vector<RvdEdge>& bucketed = m.edgeBuffer;
-        bucketed.resize(result.edges.size());
+        bucketed.resize(static_cast<size_t>(start[n]));
         std::vector<int> fill(start.begin(), start.end() - 1);
-        for (const RvdEdge& e : result.edges) bucketed[fill[e.i]++] = e;
-        std::vector<int> kept(n, 0);
+        for (const ChunkOutput& out : m.chunks)
+            for (const RvdEdge& e : out.edges) bucketed[fill[e.i]++] = e;
+        std::vector<int> kept(n + 1, 0);
 #pragma omp parallel for schedule(static)
         for (long long i = 0; i < static_cast<long long>(n); ++i) {
             RvdEdge* first = bucketed.data() + start[i];
@@ -956,11 +958,13 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
                 else
                     *w++ = *r;
             }
-            kept[i] = static_cast<int>(w - first);
+            kept[i + 1] = static_cast<int>(w - first);
         }
-        result.edges.clear();
-        for (size_t i = 0; i < n; ++i)
-            result.edges.insert(result.edges.end(), bucketed.begin() + start[i], bucketed.begin() + start[i] + kept[i]);
+        for (size_t i = 0; i < n; ++i) kept[i + 1] += kept[i];  // now where each seed's edges go
+        result.edges.resize(static_cast<size_t>(kept[n]));
+#pragma omp parallel for schedule(static)
+        for (long long i = 0; i < static_cast<long long>(n); ++i)
+            std::copy(bucketed.begin() + start[i], bucketed.begin() + start[i] + (kept[i + 1] - kept[i]), result.edges.begin() + kept[i]);
     }
     result.pieceSeed.clear();
     result.piecePoint.clear();

@@ -165,12 +165,11 @@ private:
         out.erase(std::unique(out.begin(), out.end()), out.end());
     }
 
-    // Cost of removing `from` into `to` (infinite when not allowed by the lock or the error bound).
-    double cost(int from, int to) const
+    // Cost of removing `from` into `to` (infinite when not allowed by the lock or the error
+    // bound), given q = the sum of both ends' quadrics (the same either way: the sums commute).
+    double cost(int from, int to, const Quadric& q) const
     {
         if (locked_[from]) return std::numeric_limits<double>::infinity();
-        Quadric q = quadric_[from];
-        q += quadric_[to];
         const double error = q.error(position_[to]);
         if (q.area > 0 && error > params_.maxError * params_.maxError * q.area) return std::numeric_limits<double>::infinity();
         return error + kLengthWeight * q.area * (position_[from] - position_[to]).squaredNorm();
@@ -179,7 +178,10 @@ private:
     //! The cheaper direction of collapsing edge (u, w); false when neither is allowed.
     bool edgeCandidate(int u, int w, Candidate& out) const
     {
-        const double uw = cost(u, w), wu = cost(w, u);
+        if (locked_[u] && locked_[w]) return false;
+        Quadric q = quadric_[u];
+        q += quadric_[w];
+        const double uw = cost(u, w, q), wu = cost(w, u, q);
         const bool forward = uw < wu || (uw == wu && u < w);
         const double best = forward ? uw : wu;
         if (!std::isfinite(best)) return false;

@@ -1628,12 +1628,26 @@ bool ValenceOptimizer::lowerSagAround(int v, double target)
     };
     const double minShape = meanShape() - kSagRepairShapeLoss;
     double best = largestSag();
+    int order[32];
+    std::copy(faces.begin(), faces.end(), order);
     auto improves = [&] {
         double angle, dot;
         localShape(faces, angle, dot);  // (the angles per face: sharper())
         if (dot < minDot || sharper() || meanShape() < minShape) return false;
-        const double sagHere = largestSag();
-        if (!(sagHere < best * (1 - 1e-6))) return false;
+        // largestSag() < limit, face by face: the first face at or over the limit answers (most
+        // trial positions are refused, and each face's sag costs four closest-point queries);
+        // the face that refused the last one is asked first.
+        const double limit = best * (1 - 1e-6);
+        if (!(target < limit)) return false;
+        double sagHere = target;
+        for (int i = 0; i < faceCount; ++i) {
+            const double sag = cachedFaceSag(order[i]);
+            if (sag >= limit) {
+                std::swap(order[0], order[i]);
+                return false;
+            }
+            sagHere = std::max(sagHere, sag);
+        }
         best = sagHere;
         return true;
     };
