@@ -428,11 +428,14 @@ struct RestrictedVoronoiDiagram::Impl {
         const int k = (buildCandidates ? candidateCount : storedNeighbours) + 1;
 #pragma omp parallel reduction(+ : failed)
         {
-            // The seed k-d tree, built by one thread while the others start on the lists: some
-            // vertex's or list's fallback asks for it in nearly every evaluation (bunny 5000: 65
-            // of 65, 0.5 ms each), and built on first demand the other threads waited for it.
+            // Without the candidate lists every seed asks the k-d tree: one thread builds it while
+            // the others start (built on first demand, they would wait for it). With them it is
+            // built on demand only (a failed list, rare: bunny 5000, 26 in 55 evaluations); the
+            // vertices' fallbacks scan the seeds instead (nearestSeedByScan).
+            if (!useCandidates) {
 #pragma omp single nowait
-            seedTree();
+                seedTree();
+            }
             std::vector<uint32_t> idx(k);
             std::vector<double> d2(k);
             std::vector<std::pair<double, uint32_t>> sorted(candidateCount);
@@ -562,12 +565,31 @@ struct RestrictedVoronoiDiagram::Impl {
             if (certified || storedNeighbours == n - 1) return tie ? -1 : current;
             break;  // the lists did not reach the security radius: ask the tree
         }
-        uint32_t idx[2];
-        double d2[2];
-        const size_t found = seedTree().knnSearch(p.data(), 2, idx, d2);
-        // Ties and coincident seeds go the clipping way, which resolves them.
-        if ((found >= 2 && d2[1] == d2[0]) || duplicate[idx[0]]) return -1;
-        return static_cast<int>(idx[0]);
+        return nearestSeedByScan(p);
+    }
+
+    // The k-d tree's answer to "the two seeds nearest to p" (the nearest, -1 when the second is
+    // as near or the nearest is a duplicate: ties and coincident seeds go the clipping way, which
+    // resolves them), by a scan of every seed: the vertices whose lists do not certify their
+    // nearest seed are a few dozen per evaluation (bunny 5000: ~28), and a scan of 5000 seeds
+    // (~8 µs) each costs less than building the tree for them (~1 ms). The squared distances
+    // are summed as nanoflann's L2 metric sums them, so the answers are the tree's, bit for bit.
+    int nearestSeedByScan(const Vec3& p) const
+    {
+        const std::vector<Vec3>& s = *seeds;
+        double best = std::numeric_limits<double>::infinity(), second = best;
+        int nearest = -1;
+        for (int j = 0; j < static_cast<int>(s.size()); ++j) {
+            double d2 = 0;
+            for (int k = 0; k < 3; ++k) {
+                const double diff = p[k] - s[j][k];
+                d2 += diff * diff;
+            }
+            if (d2 < best) second = best, best = d2, nearest = j;
+            else if (d2 < second) second = d2;
+        }
+        if (nearest < 0 || second == best || duplicate[nearest]) return -1;
+        return nearest;
     }
 
     // The nearest seed of every vertex, or (borderOnly) of the corners of the faces with a border
