@@ -2,8 +2,10 @@
 // line "fcvt: error: <message>" on stderr: exit code 2 for usage errors, 1 for the rest.
 #include "arguments.h"
 #include "commands.h"
+#include "wait_policy.h"
 
 #include <malloc.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -63,18 +65,30 @@ int run(const std::vector<std::string>& args)
     throw UsageError("unknown command '" + command + "' (try 'fcvt --help')");
 }
 
-//! OpenMP threads that wait at the end of a parallel region sleep instead of spinning, unless the
-//! user chose (OMP_WAIT_POLICY or GOMP_SPINCOUNT set). libgomp reads these when it loads, before
-//! main, so the first start sets the variable and runs the same program again. Measured (issue
-//! 12, a shared 2-core machine, 2 threads, medians of 3 whole commands side by side): torus 1000
-//! 14.8 s spinning against 3.4 s passive and 4.5 s on one thread; fertility 3000 26.0 / 10.2 /
-//! 16.0 s (another run, torus / fertility: passive 1.9 / 8.7 s, GOMP_SPINCOUNT=10000 3.0 /
-//! 13.7 s). A spinning
-//! thread holds its core while the other one waits for a time slice at every barrier; the
-//! outputs are the same bytes.
-void sleepWhileWaiting(char** argv)
+//! How idle OpenMP threads wait, unless the user chose (OMP_WAIT_POLICY or GOMP_SPINCOUNT set).
+//! libgomp reads these when it loads, before main, so a change means setting the variable and
+//! running the same program again. On a machine with a free core per thread they keep libgomp's
+//! default (spin up to GOMP_SPINCOUNT 300 000, then sleep): a sleeping thread takes ~0.2 ms to
+//! wake on these virtual machines, at every parallel region and barrier (issue 12, 2 cores,
+//! medians of 7 / 5 whole commands: torus 1000 0.31 s sleeping against 0.28 s spinning, bunny
+//! 5000 1.38 against 1.30-1.33 s). Where other tasks are runnable when the command starts, they
+//! sleep at once (OMP_WAIT_POLICY=PASSIVE, spin count 0): a spinning thread holds its core while
+//! the one with work waits for a time slice at every barrier (the same machine with one busy
+//! process beside: torus 0.38 s sleeping against 0.58-1.07 s spinning, bunny 2.2 against
+//! 2.9-4.8 s; in an earlier, busier run torus 3.4 against 14.8 s). The outputs are the same bytes.
+void chooseWaitPolicy(int argc, char** argv)
 {
+    using namespace fieldcvt::cli;
     if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
+    int others = -1;
+    if (FILE* f = std::fopen("/proc/loadavg", "r")) {
+        char line[256] = {0};
+        if (std::fgets(line, sizeof line, f)) others = otherRunnableTasks(line);
+        std::fclose(f);
+    }
+    cpu_set_t set;
+    const int cores = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 1;
+    if (spinningFits(others, requestedThreads(argc, argv, cores), cores)) return;
     if (setenv("OMP_WAIT_POLICY", "PASSIVE", 1) != 0) return;
     execv("/proc/self/exe", argv);  // returns only on failure: go on as we are
 }
@@ -91,7 +105,7 @@ void keepHeapPadding() { mallopt(M_TOP_PAD, 64 << 20); }
 
 int main(int argc, char** argv)
 {
-    sleepWhileWaiting(argv);
+    chooseWaitPolicy(argc, argv);
     keepHeapPadding();
     try {
         return run(std::vector<std::string>(argv + 1, argv + argc));
