@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "field_hierarchy.h"  // rosy:: kernels
 
+#include <algorithm>
 #include <cmath>
 
 namespace fieldcvt {
@@ -51,11 +52,26 @@ FieldSample interpolateField(const TriMesh& mesh, const DirectionField& field, i
     // rotation by 60° does when the three normals differ, so A's rotations are searched too —
     // which is what makes the result independent of the representative stored at A, not only
     // at B and C. 108 combinations, no allocation.
+    // A pair (ka, kb) whose six sums cannot beat the best so far is skipped: |P(ab + c)| <=
+    // |P ab| + |P c| (P = I − nnᵀ), plus a margin far above the rounding of either side, so
+    // the skipped sums are never the first maximum and the answer is that of all 108.
+    double projectedC = 0, lengthC = 0;
+    for (int kc = 0; kc < 3; ++kc) {
+        const double nc = n.dot(r[2][kc]), c2 = r[2][kc].squaredNorm();
+        projectedC = std::max(projectedC, std::sqrt(std::max(0.0, c2 - nc * nc)));
+        lengthC = std::max(lengthC, std::sqrt(c2));
+    }
     double best = -1;
     Vec3 bestSum = Vec3::Zero();
     for (int ka = 0; ka < 3; ++ka)
         for (int kb = 0; kb < 6; ++kb) {
             const Vec3 ab = r[0][ka] + (kb < 3 ? r[1][kb] : Vec3(-r[1][kb - 3]));
+            if (best >= 0) {
+                const double nab = n.dot(ab), ab2 = ab.squaredNorm();
+                const double reach = std::sqrt(std::max(0.0, ab2 - nab * nab)) + projectedC;
+                const double scale = std::sqrt(ab2) + lengthC;
+                if (reach * reach + 1e-9 * scale * scale < best) continue;
+            }
             for (int kc = 0; kc < 6; ++kc) {
                 const Vec3 sum = ab + (kc < 3 ? r[2][kc] : Vec3(-r[2][kc - 3]));
                 const double nd = n.dot(sum);

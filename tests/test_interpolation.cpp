@@ -1,6 +1,7 @@
 // Interpolation of the 6-RoSy field (paper §4.2).
 #include "field.h"
 #include "interpolation.h"
+#include "field_hierarchy.h"  // rosy:: kernels
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -145,4 +146,53 @@ TEST(Interpolation, ContinuousAcrossEdges)
                     }
         }
     EXPECT_EQ(checked, m.faceCount() * 3 / 2);
+}
+
+// The search skips pairs of representatives that cannot beat the best sum so far (a bound with a
+// margin): the answer must be, bit for bit, the first maximum over all 108 sums, computed here the
+// plain way, on smooth and on rough fields.
+TEST(Interpolation, SkippedSumsNeverChangeTheAnswer)
+{
+    const TriMesh m = testmesh::torus(24, 12);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int smoothing : {2, 20}) {
+        FieldParams params;
+        params.smoothingIterations = smoothing;
+        const DirectionField field = computeField(m, params);
+        for (int f = 0; f < m.faceCount(); ++f) {
+            double a = unit(rng), b = unit(rng);
+            if (a + b > 1) a = 1 - a, b = 1 - b;
+            const Vec3 w(a, b, 1 - a - b);
+            const FieldSample got = interpolateField(m, field, f, w);
+            // The plain search (the normal as interpolateField computes it).
+            const Face& t = m.faces[f];
+            Vec3 n = w[0] * field.normals[t[0]] + w[1] * field.normals[t[1]] + w[2] * field.normals[t[2]];
+            n /= n.norm();
+            Vec3 r[3][6];
+            for (int v = 0; v < 3; ++v)
+                for (int k = 0; k < 3; ++k) {
+                    const Vec3 c = field.normals[t[v]].cross(field.directions[t[v]]);
+                    const Vec3& d = field.directions[t[v]];
+                    const Vec3 rep = k == 0 ? d : k == 1 ? Vec3(0.5 * d + rosy::kSin60 * c) : Vec3(-0.5 * d + rosy::kSin60 * c);
+                    r[v][k] = w[v] * rep;
+                    r[v][k + 3] = -r[v][k];
+                }
+            double best = -1;
+            Vec3 bestSum = Vec3::Zero();
+            for (int ka = 0; ka < 3; ++ka)
+                for (int kb = 0; kb < 6; ++kb)
+                    for (int kc = 0; kc < 6; ++kc) {
+                        const Vec3 sum = (r[0][ka] + r[1][kb]) + r[2][kc];
+                        const double nd = n.dot(sum);
+                        const double value = sum.squaredNorm() - nd * nd;
+                        if (value > best) best = value, bestSum = sum;
+                    }
+            const Vec3 d = rosy::projectTangent(bestSum, n);
+            const Vec3 expected = d / d.norm();
+            ASSERT_EQ(got.direction.x(), expected.x()) << "face " << f << ", smoothing " << smoothing;
+            ASSERT_EQ(got.direction.y(), expected.y());
+            ASSERT_EQ(got.direction.z(), expected.z());
+        }
+    }
 }
