@@ -65,32 +65,50 @@ int run(const std::vector<std::string>& args)
     throw UsageError("unknown command '" + command + "' (try 'fcvt --help')");
 }
 
-//! How idle OpenMP threads wait, unless the user chose (OMP_WAIT_POLICY or GOMP_SPINCOUNT set).
-//! libgomp reads these when it loads, before main, so a change means setting the variable and
-//! running the same program again. On a machine with a free core per thread they keep libgomp's
-//! default (spin up to GOMP_SPINCOUNT 300 000, then sleep): a sleeping thread takes ~0.2 ms to
-//! wake on these virtual machines, at every parallel region and barrier (issue 12, 2 cores,
-//! medians of 7 / 5 whole commands: torus 1000 0.31 s sleeping against 0.28 s spinning, bunny
-//! 5000 1.38 against 1.30-1.33 s). Where other tasks are runnable when the command starts, they
-//! sleep at once (OMP_WAIT_POLICY=PASSIVE, spin count 0): a spinning thread holds its core while
-//! the one with work waits for a time slice at every barrier (the same machine with one busy
-//! process beside: torus 0.38 s sleeping against 0.58-1.07 s spinning, bunny 2.2 against
-//! 2.9-4.8 s; in an earlier, busier run torus 3.4 against 14.8 s). The outputs are the same bytes.
-void chooseWaitPolicy(int argc, char** argv)
+//! The settings the C library and libgomp read as they load, before main: set here, then the
+//! same program runs again (a variable the user set is kept).
+//! - GLIBC_TUNABLES=glibc.malloc.hugetlb=1: the heap in transparent huge pages where the kernel
+//!   offers them on request (Debian's default, "madvise"): bunny 5000 11 400 -> 2 800 minor page
+//!   faults; whole commands, medians of 7 alternating (issue 12, 2 threads): mask 4000 1.07 ->
+//!   0.94 s, fandisk 5000 1.13 -> 1.03 s, fertility 7000 1.21 -> 1.10 s, bunny 5000 1.27 ->
+//!   1.23 s, nefertiti 10000 2.16 -> 2.11 s, torus 1000 the same.
+//! - How idle OpenMP threads wait. On a machine with a free core per thread they spin up to
+//!   libgomp's default count (GOMP_SPINCOUNT 300 000), then sleep: a sleeping thread takes ~0.2 ms
+//!   to wake on these virtual machines, at every parallel region and barrier (medians of 7 / 5:
+//!   torus 1000 0.31 s sleeping against 0.28 s spinning, bunny 5000 1.38 against 1.30-1.33 s).
+//!   Where other tasks are runnable as the command starts (5 looks, 1 ms apart) they sleep at once
+//!   (OMP_WAIT_POLICY=PASSIVE, spin count 0): a spinning thread holds its core while the one with
+//!   work waits for a time slice at every barrier (the same machine with one busy process beside:
+//!   torus 0.38 s sleeping against 0.58-1.07 s spinning, bunny 2.2 against 2.9-4.8 s; in an
+//!   earlier, busier run torus 3.4 against 14.8 s). The outputs are the same bytes either way.
+void chooseRuntimeSettings(int argc, char** argv)
 {
     using namespace fieldcvt::cli;
-    if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
-    int others = -1;
-    if (FILE* f = std::fopen("/proc/loadavg", "r")) {
-        char line[256] = {0};
-        if (std::fgets(line, sizeof line, f)) others = otherRunnableTasks(line);
-        std::fclose(f);
+    bool changed = false;
+    if (!std::getenv("GLIBC_TUNABLES")) changed = setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0;
+    if (!std::getenv("OMP_WAIT_POLICY") && !std::getenv("GOMP_SPINCOUNT")) {
+        cpu_set_t set;
+        const int cores = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 1;
+        const int threads = requestedThreads(argc, argv, cores);
+        // Up to 5 looks 1 ms apart: the process that started this one is often still runnable
+        // at the first (it returns from starting it before it waits); a competing busy task is
+        // runnable at every look.
+        bool spin = false;
+        for (int look = 0; look < 5 && !spin; ++look) {
+            if (look > 0) usleep(1000);
+            int others = -1;
+            if (FILE* f = std::fopen("/proc/loadavg", "r")) {
+                char line[256] = {0};
+                if (std::fgets(line, sizeof line, f)) others = otherRunnableTasks(line);
+                std::fclose(f);
+            }
+            if (others < 0) break;  // no load to read: sleep
+            spin = spinningFits(others, threads, cores);
+        }
+        // The spin count written out (libgomp's default) so that the run below does not decide again.
+        changed = (spin ? setenv("GOMP_SPINCOUNT", "300000", 1) : setenv("OMP_WAIT_POLICY", "PASSIVE", 1)) == 0 || changed;
     }
-    cpu_set_t set;
-    const int cores = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 1;
-    if (spinningFits(others, requestedThreads(argc, argv, cores), cores)) return;
-    if (setenv("OMP_WAIT_POLICY", "PASSIVE", 1) != 0) return;
-    execv("/proc/self/exe", argv);  // returns only on failure: go on as we are
+    if (changed) execv("/proc/self/exe", argv);  // returns only on failure: go on as we are
 }
 
 //! The heap grows and shrinks by 64 MB at a time instead of glibc's 128 kB: the optimisation
@@ -105,7 +123,7 @@ void keepHeapPadding() { mallopt(M_TOP_PAD, 64 << 20); }
 
 int main(int argc, char** argv)
 {
-    chooseWaitPolicy(argc, argv);
+    chooseRuntimeSettings(argc, argv);
     keepHeapPadding();
     try {
         return run(std::vector<std::string>(argv + 1, argv + argc));
