@@ -246,8 +246,26 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     const int lloydSteps = latticeStart ? params.latticeLloydIterations : params.lloydIterations;
     const double expectedEvaluations = lloydSteps + 1.1 * (params.cvtIterations + params.fcvtIterations) +
                                        (constrained ? params.boundaryIterations : 0) + 2;
-    EnergyFunction energy(optSurface, rho);
-    ClosestPointTree tree(optSurface);
+    // The energy's diagram structures and the surface's closest-point tree are independent and
+    // serial: built side by side (bunny 5000: ~6 and ~5 ms).
+    std::unique_ptr<EnergyFunction> energyBuilt;
+    std::unique_ptr<const ClosestPointTree> treeBuilt;
+    {
+        std::exception_ptr failure;
+#pragma omp parallel num_threads(2) if (omp_get_max_threads() > 1)
+        {
+            try {
+                if (omp_get_thread_num() == 0) energyBuilt = std::make_unique<EnergyFunction>(optSurface, rho);
+                if (omp_get_thread_num() == 1 || omp_get_num_threads() == 1) treeBuilt = std::make_unique<ClosestPointTree>(optSurface);
+            } catch (...) {
+#pragma omp critical(fcvt_build_failure)
+                if (!failure || omp_get_thread_num() == 0) failure = std::current_exception();
+            }
+        }
+        if (failure) std::rethrow_exception(failure);
+    }
+    EnergyFunction& energy = *energyBuilt;
+    const ClosestPointTree& tree = *treeBuilt;
     DirectionField field;
     FieldHierarchyLevels fieldHierarchy;  // the field's, for the lattice start (freed after it)
     std::string stage = "sampling";
