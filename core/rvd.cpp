@@ -56,12 +56,6 @@ namespace {
 // nanoflann's k-nearest result set with a known upper bound on the k-th distance: subtrees
 // beyond it are skipped from the start. The answer is the same as without the bound as long as
 // the bound is not below the true k-th distance.
-// nanoflann 1.5 renamed SearchParams (Debian 12 has 1.4.2, Debian 13 1.7.1).
-#if defined(NANOFLANN_VERSION) && NANOFLANN_VERSION >= 0x150
-using KnnSearchParams = nanoflann::SearchParameters;
-#else
-using KnnSearchParams = nanoflann::SearchParams;
-#endif
 
 class BoundedKnnResult {
 public:
