@@ -80,6 +80,9 @@ public:
     //! only the speed depends on it: nearby queries one after the other share the tree's cache).
     FieldFrames framesAt(const std::vector<Vec3>& points, std::vector<int>& faces, const std::vector<int>& queryOrder) const;
 
+    //! Per sample, the face of its frame's point at the last evaluation with the field (empty
+    //! before one): a hint for closest-point queries near the samples.
+    const std::vector<int>& lastFrameFaces() const { return frameFaces_; }
     //! The RVD of the last evaluate() / diagram() call.
     const RvdResult& lastDiagram() const { return rvd_; }
     int evaluations() const { return evaluations_; }

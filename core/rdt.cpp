@@ -1,12 +1,15 @@
 #include "rdt.h"
 
+#include "errors.h"
 #include "mesh_edges.h"
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 namespace fieldcvt {
 
-int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex)
+int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex, std::vector<int>* alongside)
 {
     // Union the face corners around each vertex across the edges they share; every class of
     // corners beyond the first at a vertex is one more fan, which gets its own vertex copy.
@@ -44,6 +47,7 @@ int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex)
         if (it == copyOf.end()) {
             mesh.vertices.push_back(mesh.vertices[v]);
             seedOfVertex.push_back(seedOfVertex[v]);
+            if (alongside) alongside->push_back((*alongside)[v]);
             copyOf.push_back({root, mesh.vertexCount() - 1});
             it = copyOf.end() - 1;
             ++split;
@@ -151,11 +155,19 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
         result.seedOfVertex.push_back(seedOf(s));
     }
     result.mesh.vertices.resize(candidateOfVertex.size());
+    std::vector<int> faceOfCandidate(n, -1);
 #pragma omp parallel for schedule(static)
-    for (int v = 0; v < static_cast<int>(candidateOfVertex.size()); ++v) result.mesh.vertices[v] = position(candidateOfVertex[v]);
+    for (int v = 0; v < static_cast<int>(candidateOfVertex.size()); ++v) {
+        const std::pair<Vec3, int> placed = position(candidateOfVertex[v]);
+        result.mesh.vertices[v] = placed.first;
+        faceOfCandidate[candidateOfVertex[v]] = placed.second;
+    }
     result.mesh.faces.reserve(faces.size());
     for (const auto& t : faces) result.mesh.faces.push_back({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
-    result.splitVertices = splitNonManifoldVertices(result.mesh, result.seedOfVertex);
+    std::vector<int> originalOfVertex(candidateOfVertex);
+    result.splitVertices = splitNonManifoldVertices(result.mesh, result.seedOfVertex, &originalOfVertex);
+    result.faceOfVertex.resize(result.mesh.vertices.size());
+    for (size_t v = 0; v < result.faceOfVertex.size(); ++v) result.faceOfVertex[v] = faceOfCandidate[originalOfVertex[v]];
     if (result.splitVertices > 0)
         result.warnings.push_back(std::to_string(result.splitVertices) +
                                   " output vertices joined separate fans of faces (a restricted cell in several pieces: thin parts or "
@@ -183,14 +195,21 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::arra
 {
     RdtResult result = buildRdt(
         static_cast<int>(seeds.size()), triangles, [](int s) { return s; },
-        [&](int s) { return surface.closest(seeds[s]).point; });
+        [&](int s) {
+            const ClosestPoint cp = surface.closest(seeds[s]);
+            return std::make_pair(cp.point, cp.face);
+        });
     warnAboutDroppedSeeds(result, static_cast<int>(seeds.size()));
     return result;
 }
 
-RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const ClosestPointTree& surface)
+RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const ClosestPointTree& surface,
+                     const std::vector<int>& seedFaceHints)
 {
     const int n = static_cast<int>(seeds.size());
+    if (!seedFaceHints.empty() && seedFaceHints.size() != seeds.size())
+        throw InvalidInputError("extractRdt: " + std::to_string(seedFaceHints.size()) + " face hints for " +
+                                std::to_string(seeds.size()) + " seeds");
     std::vector<int> pieces(n, 0);
     for (int s : rvd.pieceSeed) ++pieces[s];
     RdtResult result = buildRdt(
@@ -199,7 +218,9 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const
             // One piece: the closest point on the whole surface, as for a plain RDT; several:
             // the closest point on this piece (the surface's may be on another sheet).
             const int s = rvd.pieceSeed[p];
-            return pieces[s] == 1 ? surface.closest(seeds[s]).point : rvd.piecePoint[p];
+            if (pieces[s] != 1) return std::make_pair(rvd.piecePoint[p], -1);
+            const ClosestPoint cp = surface.closest(seeds[s], seedFaceHints.empty() ? -1 : seedFaceHints[s]);
+            return std::make_pair(cp.point, cp.face);
         });
     result.multiPieceSeeds = static_cast<int>(std::count_if(pieces.begin(), pieces.end(), [](int c) { return c > 1; }));
     warnAboutDroppedSeeds(result, n);

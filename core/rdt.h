@@ -13,6 +13,9 @@ namespace fieldcvt {
 struct RdtResult {
     TriMesh mesh;
     std::vector<int> seedOfVertex;  //!< sample index of each output vertex
+    //! Per output vertex, the input face its closest point lies on (-1: placed on a piece of its
+    //! cell instead): a hint for later closest-point queries at the vertex.
+    std::vector<int> faceOfVertex;
     int droppedSeeds = 0;           //!< samples in no triangle (empty or isolated cells)
     int removedFaces = 0;           //!< faces removed to keep the output edge-manifold
     int splitVertices = 0;          //!< extra vertices made by splitting non-manifold vertices
@@ -30,8 +33,9 @@ struct RdtResult {
 //! that no face uses and places each vertex at its sample's closest point on the input surface
 //! (which keeps the approximation error at CVT level).
 //! Gives every fan of faces around a vertex its own vertex (same position and sample), so the
-//! mesh is vertex-manifold; `seedOfVertex` grows with the copies. Returns the copies made.
-int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex);
+//! mesh is vertex-manifold; `seedOfVertex` (and `alongside`, if given: any other per-vertex
+//! values) grows with the copies. Returns the copies made.
+int splitNonManifoldVertices(TriMesh& mesh, std::vector<int>& seedOfVertex, std::vector<int>* alongside = nullptr);
 
 RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
                      const ClosestPointTree& surface);
@@ -41,7 +45,10 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::arra
 //! falls apart on thin parts or near-touching sheets does not glue them together. A sample with
 //! one piece is placed at its closest point on the surface; a sample with several, at its
 //! closest point on each piece.
-RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const ClosestPointTree& surface);
+//! `seedFaceHints` (optional, one per seed or empty): a face near each seed's closest point,
+//! which only speeds the queries up (ClosestPointTree::closest's hint: the same answers).
+RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const ClosestPointTree& surface,
+                     const std::vector<int>& seedFaceHints = {});
 
 
 }  // namespace fieldcvt

@@ -387,13 +387,16 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                                   " samples whose cells had emptied during the optimisation were re-seeded");
 
     std::vector<VertexRole> roles;  // per output vertex, for the valence optimisation
+    std::vector<int> vertexFaceHints;  // per output vertex, the face of its closest point (a query hint)
     pipeline.run("rdt", [&] {
         stage = "rdt";
         pipeline.report(stage, 90);
         RvdOptions options;
         options.triangles = true;
         const RvdResult& rvd = energy.diagram(seeds, options);
-        RdtResult rdt = extractRdt(seeds, rvd, tree);  // on cell pieces (multi-nerve RDT)
+        // On cell pieces (multi-nerve RDT); the samples' frame faces are hints for their closest points.
+        const std::vector<int>& hints = energy.lastFrameFaces();
+        RdtResult rdt = extractRdt(seeds, rvd, tree, hints.size() == seeds.size() ? hints : std::vector<int>{});
         result.warnings.insert(result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         result.mesh = std::move(rdt.mesh);
         if (result.mesh.faces.empty())
@@ -401,13 +404,14 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                               " samples on this surface: use more vertices");
         for (int seed : rdt.seedOfVertex)
             roles.push_back(size_t(seed) < sampleRoles.size() ? roleOf(sampleRoles[size_t(seed)]) : VertexRole::Free);
+        vertexFaceHints = std::move(rdt.faceOfVertex);
     });
     if (params.valenceOptimization) {
         pipeline.run("valence", [&] {
             stage = "valence";
             pipeline.report(stage, 92);
             const ValenceSurface on{optSurface, tree, features.segments, useField ? &field : nullptr, border};
-            result.valence = optimizeValence(result.mesh, roles, on, params.valence);
+            result.valence = optimizeValence(result.mesh, roles, on, params.valence, vertexFaceHints);
         });
     }
     if (simplified) {

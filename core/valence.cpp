@@ -246,7 +246,7 @@ double meanRatio(const Vec3& p0, const Vec3& p1, const Vec3& p2)
 class ValenceOptimizer {
 public:
     ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
-                     const ValenceParams& params);
+                     const ValenceParams& params, const std::vector<int>& faceHints);
     ValenceStats run();
 
 private:
@@ -412,7 +412,7 @@ private:
 };
 
 ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
-                                   const ValenceParams& params)
+                                   const ValenceParams& params, const std::vector<int>& faceHints)
     : mesh_(mesh), roles_(roles), surface_(surface), params_(params),
       walk_(std::make_shared<const SurfaceWalk>(surface.input))
 {
@@ -470,7 +470,7 @@ ValenceOptimizer::ValenceOptimizer(TriMesh& mesh, std::vector<VertexRole>& roles
     normal_.resize(n);
 #pragma omp parallel for schedule(static)
     for (int v = 0; v < n; ++v) {
-        closest_[v] = surface.tree.closest(pos_[v]);
+        closest_[v] = surface.tree.closest(pos_[v], faceHints.empty() ? -1 : faceHints[v]);  // the hint: speed only
         normal_[v] = surfaceNormal(closest_[v]);
     }
     manifold_.assign(n, 1);
@@ -1784,14 +1784,17 @@ ValenceStats ValenceOptimizer::run()
 }  // namespace
 
 ValenceStats optimizeValence(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
-                             const ValenceParams& params)
+                             const ValenceParams& params, const std::vector<int>& faceHints)
 {
+    if (!faceHints.empty() && faceHints.size() != mesh.vertices.size())
+        throw InvalidInputError("optimizeValence: " + std::to_string(faceHints.size()) + " face hints for " +
+                                std::to_string(mesh.vertices.size()) + " vertices");
     if (mesh.faces.empty()) {
         ValenceStats stats;
         if (roles.empty()) roles.assign(mesh.vertices.size(), VertexRole::Free);
         return stats;
     }
-    ValenceOptimizer optimizer(mesh, roles, surface, params);
+    ValenceOptimizer optimizer(mesh, roles, surface, params, faceHints);
     return optimizer.run();
 }
 

@@ -97,7 +97,9 @@ struct ValenceSurface {
 //! nor edges between two Feature / Corner vertices; only Free vertices are split, and a
 //! collapse needs a Free end. V6% before and after are measured like computeQuality does.
 //! Deterministic, whatever the thread count. Throws InvalidInputError on a size mismatch.
+//! `faceHints` (optional, one per vertex or empty): a face of `surface.input` near each vertex
+//! (RdtResult::faceOfVertex), which only speeds up the first closest-point queries.
 ValenceStats optimizeValence(TriMesh& mesh, std::vector<VertexRole>& roles, const ValenceSurface& surface,
-                             const ValenceParams& params);
+                             const ValenceParams& params, const std::vector<int>& faceHints = {});
 
 }  // namespace fieldcvt

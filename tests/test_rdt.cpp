@@ -325,3 +325,41 @@ TEST(Rdt, PillowOnAnEdgeWithOtherFacesIsDropped)
     EXPECT_EQ(r.droppedSeeds, 1);  // candidate 5 was only the lens
     EXPECT_TRUE(computeTopology(r.mesh).manifold());
 }
+
+// Each output vertex knows the input face it lies on (a hint for the valence stage's queries);
+// hints for the seeds' queries change nothing but the speed.
+TEST(Rdt, VerticesKnowTheirFaceAndHintsChangeNothing)
+{
+    const TriMesh surface = testmesh::torus(40, 20);
+    const std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 300, 3);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult result;
+    RvdOptions options;
+    options.triangles = true;
+    rvd.compute(seeds, options, result);
+    ClosestPointTree tree(surface);
+    const RdtResult plain = extractRdt(seeds, result, tree);
+    ASSERT_EQ(plain.faceOfVertex.size(), plain.mesh.vertices.size());
+    for (size_t v = 0; v < plain.mesh.vertices.size(); ++v) {
+        const int f = plain.faceOfVertex[v];
+        ASSERT_GE(f, 0);
+        const Face& t = surface.faces[f];
+        const Vec3 a = surface.vertices[t[0]], b = surface.vertices[t[1]], c = surface.vertices[t[2]];
+        const Vec3 p = plain.mesh.vertices[v];
+        // On the face's plane and inside it (barycentric coordinates >= 0, up to rounding).
+        const Vec3 n = (b - a).cross(c - a);
+        EXPECT_NEAR(n.normalized().dot(p - a), 0.0, 1e-12);
+        EXPECT_GE((b - a).cross(p - a).dot(n), -1e-12 * n.squaredNorm());
+        EXPECT_GE((c - b).cross(p - b).dot(n), -1e-12 * n.squaredNorm());
+        EXPECT_GE((a - c).cross(p - c).dot(n), -1e-12 * n.squaredNorm());
+    }
+    // Hints far off (every seed pointed at face 0) and near (the faces found): the same mesh.
+    const RdtResult far = extractRdt(seeds, result, tree, std::vector<int>(seeds.size(), 0));
+    std::vector<int> near(seeds.size(), -1);
+    for (size_t v = 0; v < plain.seedOfVertex.size(); ++v) near[plain.seedOfVertex[v]] = plain.faceOfVertex[v];
+    const RdtResult hinted = extractRdt(seeds, result, tree, near);
+    EXPECT_EQ(far.mesh.vertices, plain.mesh.vertices);
+    EXPECT_EQ(hinted.mesh.vertices, plain.mesh.vertices);
+    EXPECT_EQ(hinted.mesh.faces, plain.mesh.faces);
+    EXPECT_THROW(extractRdt(seeds, result, tree, std::vector<int>(3, 0)), InvalidInputError);
+}
