@@ -258,7 +258,7 @@ void facePoints(const TriMesh& surface, int f, const LevelFrames& frames, const 
 
 // The lattice points over the surface, given each vertex's lattice origin.
 std::vector<Vec3> latticePoints(const TriMesh& surface, const LevelFrames& frames, const std::vector<Vec3>& origin,
-                                double rho, int* candidateCount)
+                                double rho, int* candidateCount, std::vector<int>& sampleFaces)
 {
     // Every face's points in face order (thread-count independent): counted first, then written
     // at their face's offset, so no per-face container is allocated.
@@ -290,6 +290,8 @@ std::vector<Vec3> latticePoints(const TriMesh& surface, const LevelFrames& frame
         const int id = static_cast<int>(samples.size());
         samples.push_back(Vec3::Zero());
         members.push_back(0);
+        // The face that gave this candidate (faces' candidates are in face order).
+        sampleFaces.push_back(static_cast<int>(std::upper_bound(first.begin(), first.end(), static_cast<int>(i)) - first.begin()) - 1);
         // The candidates within the radius, nearest first, equal distances in the order the
         // search meets them: the order of a k-nearest search (which ranks them so), at the cost
         // of a radius search (~3 found instead of 16 asked for).
@@ -318,7 +320,7 @@ std::vector<Vec3> solvePositionField(const TriMesh& surface, const DirectionFiel
 }
 
 std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& field, int count, const LatticeParams& params,
-                                 LatticeReport* report, const FieldHierarchyLevels* hierarchy)
+                                 LatticeReport* report, const FieldHierarchyLevels* hierarchy, std::vector<int>* sampleFaces)
 {
     FieldHierarchyLevels built;
     const bool reuse = hierarchy && !hierarchy->levels.empty() && hierarchy->levels[0].vertexCount() == surface.vertexCount();
@@ -332,13 +334,16 @@ std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& f
     // The count goes as 1/ρ² (the border's half row as 1/ρ): each correction lands closer,
     // but the count moves in steps (whole rows), so the closest of a few passes is kept.
     std::vector<Vec3> samples;
+    std::vector<int> faces, keptFaces;
     double spacing = latticeSpacingFor(surface, count);
     for (r.passes = 1; r.passes <= params.maxPasses; ++r.passes) {
         int candidates = 0;
-        std::vector<Vec3> points = latticePoints(surface, frames[0], solveOnHierarchy(h, frames, spacing, params.iterations, params.seed), spacing, &candidates);
+        faces.clear();
+        std::vector<Vec3> points = latticePoints(surface, frames[0], solveOnHierarchy(h, frames, spacing, params.iterations, params.seed), spacing, &candidates, faces);
         const double ratio = double(points.size()) / count;
         if (samples.empty() || std::abs(double(points.size()) - count) < std::abs(double(samples.size()) - count)) {
             samples.swap(points);
+            keptFaces.swap(faces);
             r.spacing = spacing;
             r.candidates = candidates;
         }
@@ -346,6 +351,7 @@ std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& f
         spacing *= std::sqrt(ratio);
     }
     r.samples = static_cast<int>(samples.size());
+    if (sampleFaces) *sampleFaces = std::move(keptFaces);
     return samples;
 }
 

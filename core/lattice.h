@@ -64,8 +64,10 @@ double latticeSpacingFor(const TriMesh& surface, int count);
 //! with those that coincide (closer than half the spacing) merged into one. The points lie on
 //! the corners' tangent planes, not yet on the surface.
 //! `hierarchy`: buildFieldHierarchy(surface, field.normals) if the caller has it (computeField
-//! hands it out), else null and it is built here.
+//! hands it out), else null and it is built here. `sampleFaces` (if given) receives, per point,
+//! a face it was taken from (a hint for its closest point on the surface).
 std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& field, int count, const LatticeParams& params,
-                                 LatticeReport* report = nullptr, const FieldHierarchyLevels* hierarchy = nullptr);
+                                 LatticeReport* report = nullptr, const FieldHierarchyLevels* hierarchy = nullptr,
+                                 std::vector<int>* sampleFaces = nullptr);
 
 }  // namespace fieldcvt

@@ -323,9 +323,10 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             // The field-aligned lattice (lattice.h) on the optimisation surface, put on it.
             LatticeParams lattice;
             lattice.seed = params.seed;
-            seeds = latticeSamples(optSurface, field, params.vertexCount, lattice, &result.lattice, &fieldHierarchy);
+            std::vector<int> faces;  // each point's face: the hint of its closest-point query
+            seeds = latticeSamples(optSurface, field, params.vertexCount, lattice, &result.lattice, &fieldHierarchy, &faces);
 #pragma omp parallel for schedule(static)
-            for (int i = 0; i < static_cast<int>(seeds.size()); ++i) seeds[i] = tree.closest(seeds[i]).point;
+            for (int i = 0; i < static_cast<int>(seeds.size()); ++i) seeds[i] = tree.closest(seeds[i], faces[i]).point;
             result.lattice.spacing /= frame.scale;  // reported in input units
             fieldHierarchy = FieldHierarchyLevels{};
         } else if (params.initialSamples.empty()) {

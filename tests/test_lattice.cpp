@@ -184,6 +184,27 @@ TEST(Lattice, SamplesDoNotDependOnTheThreadCount)
     for (size_t i = 0; i < one.size(); ++i) EXPECT_EQ(one[i], two[i]);
 }
 
+// Each point names a face it came from: within a spacing of it (the hint of its closest-point
+// query in the pipeline).
+TEST(Lattice, SamplesNameAFaceTheyCameFrom)
+{
+    const TriMesh m = workingCopy("fertility.off", 3000);
+    const DirectionField f = computeField(m, FieldParams{});
+    std::vector<int> faces;
+    LatticeReport report;
+    const std::vector<Vec3> samples = latticeSamples(m, f, 3000, LatticeParams{}, &report, nullptr, &faces);
+    ASSERT_EQ(faces.size(), samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) {
+        ASSERT_GE(faces[i], 0);
+        ASSERT_LT(faces[i], m.faceCount());
+        const Face& t = m.faces[faces[i]];
+        const Vec3 centroid = (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3.0;
+        double size = 0;
+        for (int k = 0; k < 3; ++k) size = std::max(size, (m.vertices[t[k]] - centroid).norm());
+        EXPECT_LT((samples[i] - centroid).norm(), size + report.spacing) << "sample " << i;
+    }
+}
+
 TEST(Lattice, CylinderInteriorIsAllValenceSix)
 {
     // Issue 13, item 2: cylinder.off at 1000 vertices, default pipeline: every interior vertex
