@@ -24,6 +24,24 @@ std::string readFileBytes(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+    // A regular file is read in one go into a string of its size (a growing string buffer
+    // copied the 2.4 MB bunny.obj several times: a third of its 28 ms read); anything whose size
+    // is not known up front (a pipe) through the stream buffer.
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size >= 0 && in) {
+        std::string bytes(static_cast<size_t>(size), '\0');
+        in.seekg(0, std::ios::beg);
+        if (size > 0) in.read(bytes.data(), size);
+        if (in.gcount() == size && !in.bad()) {
+            // Nothing beyond the size seen (a file that grew meanwhile reads as it was then).
+            return bytes;
+        }
+        in.clear();
+        in.seekg(0, std::ios::beg);
+    } else {
+        in.clear();
+    }
     std::ostringstream buffer;
     buffer << in.rdbuf();
     if (in.bad()) fail(path, "read error");
