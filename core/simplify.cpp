@@ -142,7 +142,9 @@ public:
         while (aliveFaces_ > params_.targetFaces && !heap_.empty()) {
             const Candidate c = heap_.top();
             heap_.pop();
-            if (!vertexAlive(c.from) || !vertexAlive(c.to) || version_[c.from] != c.fromVersion || version_[c.to] != c.toVersion)
+            // The versions first (4 bytes a vertex, against a face list's 24): most stale
+            // entries fail there, and a removed vertex's version moved on too.
+            if (version_[c.from] != c.fromVersion || version_[c.to] != c.toVersion || !vertexAlive(c.from) || !vertexAlive(c.to))
                 continue;
             if (!collapseAllowed(c.from, c.to)) continue;
             collapse(c.from, c.to);
