@@ -1752,7 +1752,9 @@ ValenceStats ValenceOptimizer::run()
         // (ties by kind and index), then applied greedily where nothing has changed yet. When
         // none is left, the look-ahead chains (R-neutral flips, then an operation they enable).
         int applied = 0;
+        bool lookAhead = false;
         for (int pass = 0; pass < (params_.lookAheadDepth >= 2 ? 2 : 1) && applied == 0; ++pass) {
+            lookAhead = pass == 1;
             const int n = static_cast<int>(pos_.size());
             candidates.clear();
             if (pass == 1) collectAllChains(candidates);
@@ -1768,6 +1770,7 @@ ValenceStats ValenceOptimizer::run()
         }
         stats_.rounds = round_;
         if (applied == 0) break;
+        if (lookAhead && applied < params_.minChainsPerRound) break;  // diminishing returns (minChainsPerRound)
     }
     stats_.irregularityAfter = irregularity();
     stats_.fieldDistanceOperations = meanFieldDistance();
