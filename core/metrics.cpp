@@ -296,6 +296,12 @@ TopologySummary computeTopology(const TriMesh& mesh)
 
 // ---------------------------------------------------------------------------------------------
 
+namespace {
+//! V6% (interior vertices of valence 6) and boundary V4% (boundary vertices of valence 4) of a
+//! mesh with faces; boundaryV4Pct is left as it is when there is no boundary.
+void valenceShares(const TriMesh& mesh, double& v6Pct, double& boundaryV4Pct);
+}  // namespace
+
 QualityMetrics computeQuality(const TriMesh& mesh)
 {
     checkFaceIndices(mesh, "computeQuality");
@@ -354,6 +360,22 @@ QualityMetrics computeQuality(const TriMesh& mesh)
     q.pctLt30 = 100.0 * smallAngleFaces / faceCount;
     q.pctGt90 = 100.0 * obtuseFaces / faceCount;
 
+    valenceShares(mesh, q.v6Pct, q.boundaryV4Pct);
+    return q;
+}
+
+double v6Percent(const TriMesh& mesh)
+{
+    checkFaceIndices(mesh, "v6Percent");
+    double v6 = 0, boundaryV4 = 0;
+    if (mesh.faceCount() > 0) valenceShares(mesh, v6, boundaryV4);
+    return v6;
+}
+
+namespace {
+
+void valenceShares(const TriMesh& mesh, double& v6Pct, double& boundaryV4Pct)
+{
     // Valence = distinct neighbours through edges; interior = on no boundary edge (one face).
     const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
     std::vector<int> valence(mesh.vertexCount(), 0);
@@ -376,10 +398,11 @@ QualityMetrics computeQuality(const TriMesh& mesh)
         ++interior;
         regular += valence[v] == 6;
     }
-    q.v6Pct = interior > 0 ? 100.0 * regular / interior : 0.0;
-    if (border > 0) q.boundaryV4Pct = 100.0 * borderRegular / border;
-    return q;
+    v6Pct = interior > 0 ? 100.0 * regular / interior : 0.0;
+    if (border > 0) boundaryV4Pct = 100.0 * borderRegular / border;
 }
+
+}  // namespace
 
 double boundaryDistance(const TriMesh& mesh, const TriMesh& reference)
 {

@@ -47,6 +47,9 @@ struct QualityMetrics {
 //! Q_min ... V6% of `mesh` (distances left NaN).
 QualityMetrics computeQuality(const TriMesh& mesh);
 
+//! computeQuality(mesh).v6Pct without the rest (no angles).
+double v6Percent(const TriMesh& mesh);
+
 struct DistanceMetrics {
     double rms = 0;        //!< root mean square of the symmetric distance samples, / diagonal
     double hausdorff = 0;  //!< symmetric Hausdorff distance, / diagonal

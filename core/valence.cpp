@@ -1740,7 +1740,7 @@ int ValenceOptimizer::applyCandidates(const std::vector<Candidate>& candidates)
 
 ValenceStats ValenceOptimizer::run()
 {
-    stats_.v6Before = computeQuality(mesh_).v6Pct;
+    stats_.v6Before = v6Percent(mesh_);
     stats_.verticesBefore = mesh_.vertexCount();
     stats_.irregularityBefore = irregularity();
     stats_.fieldDistanceBefore = meanFieldDistance();
@@ -1779,7 +1779,7 @@ ValenceStats ValenceOptimizer::run()
     lowerLargestSags();
     stats_.fieldDistanceAfter = meanFieldDistance();
     compact();
-    stats_.v6After = computeQuality(mesh_).v6Pct;
+    stats_.v6After = v6Percent(mesh_);
     stats_.verticesAfter = mesh_.vertexCount();
     return stats_;
 }
