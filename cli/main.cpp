@@ -89,22 +89,7 @@ void chooseRuntimeSettings(int argc, char** argv)
     if (!std::getenv("OMP_WAIT_POLICY") && !std::getenv("GOMP_SPINCOUNT")) {
         cpu_set_t set;
         const int cores = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 1;
-        const int threads = requestedThreads(argc, argv, cores);
-        // Up to 5 looks 1 ms apart: the process that started this one is often still runnable
-        // at the first (it returns from starting it before it waits); a competing busy task is
-        // runnable at every look.
-        bool spin = false;
-        for (int look = 0; look < 5 && !spin; ++look) {
-            if (look > 0) usleep(1000);
-            int others = -1;
-            if (FILE* f = std::fopen("/proc/loadavg", "r")) {
-                char line[256] = {0};
-                if (std::fgets(line, sizeof line, f)) others = otherRunnableTasks(line);
-                std::fclose(f);
-            }
-            if (others < 0) break;  // no load to read: sleep
-            spin = spinningFits(others, threads, cores);
-        }
+        const bool spin = threadsMaySpinNow(requestedThreads(argc, argv, cores), cores);
         // The spin count written out (libgomp's default) so that the run below does not decide again.
         changed = (spin ? setenv("GOMP_SPINCOUNT", "300000", 1) : setenv("OMP_WAIT_POLICY", "PASSIVE", 1)) == 0 || changed;
     }

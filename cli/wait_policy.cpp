@@ -1,5 +1,8 @@
 #include "wait_policy.h"
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -24,6 +27,22 @@ bool spinningFits(int others, int threads, int cores)
 {
     if (others < 0 || threads < 1 || cores < 1) return false;
     return others + threads <= cores;
+}
+
+bool threadsMaySpinNow(int threads, int cores)
+{
+    for (int look = 0; look < 5; ++look) {
+        if (look > 0) usleep(1000);
+        int others = -1;
+        if (FILE* f = std::fopen("/proc/loadavg", "r")) {
+            char line[256] = {0};
+            if (std::fgets(line, sizeof line, f)) others = otherRunnableTasks(line);
+            std::fclose(f);
+        }
+        if (others < 0) return false;  // no load to read: sleep
+        if (spinningFits(others, threads, cores)) return true;
+    }
+    return false;
 }
 
 int requestedThreads(int argc, char** argv, int cores)

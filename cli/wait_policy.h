@@ -15,6 +15,12 @@ int otherRunnableTasks(const std::string& loadavg);
 //! unknown load (others < 0) sleeps.
 bool spinningFits(int others, int threads, int cores);
 
+//! Whether `threads` OpenMP threads may spin on this machine now: spinningFits with the
+//! /proc/loadavg's runnable tasks, looked at up to 5 times 1 ms apart (the process that started
+//! this one is often still runnable at the first look; a competing busy task is at every one).
+//! False when the load cannot be read.
+bool threadsMaySpinNow(int threads, int cores);
+
 //! The OpenMP thread count a command line asks for: the value after "--threads" (0 or absent:
 //! one per core).
 int requestedThreads(int argc, char** argv, int cores);

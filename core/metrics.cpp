@@ -297,9 +297,37 @@ TopologySummary computeTopology(const TriMesh& mesh)
 // ---------------------------------------------------------------------------------------------
 
 namespace {
+
 //! V6% (interior vertices of valence 6) and boundary V4% (boundary vertices of valence 4) of a
 //! mesh with faces; boundaryV4Pct is left as it is when there is no boundary.
-void valenceShares(const TriMesh& mesh, double& v6Pct, double& boundaryV4Pct);
+void valenceShares(const TriMesh& mesh, double& v6Pct, double& boundaryV4Pct)
+{
+    // Valence = distinct neighbours through edges; interior = on no boundary edge (one face).
+    const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
+    std::vector<int> valence(mesh.vertexCount(), 0);
+    std::vector<char> onBoundary(mesh.vertexCount(), 0);
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        const auto [a, b] = edges.ends[e];
+        ++valence[a];
+        ++valence[b];
+        if (edges.isBorder(e)) onBoundary[a] = onBoundary[b] = 1;
+    }
+    int interior = 0, regular = 0, border = 0, borderRegular = 0;
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+        if (valence[v] == 0) continue;
+        if (onBoundary[v]) {
+            // Three equilateral triangles fill the half-plane at a straight boundary.
+            ++border;
+            borderRegular += valence[v] == 4;
+            continue;
+        }
+        ++interior;
+        regular += valence[v] == 6;
+    }
+    v6Pct = interior > 0 ? 100.0 * regular / interior : 0.0;
+    if (border > 0) boundaryV4Pct = 100.0 * borderRegular / border;
+}
+
 }  // namespace
 
 QualityMetrics computeQuality(const TriMesh& mesh)
@@ -372,37 +400,6 @@ double v6Percent(const TriMesh& mesh)
     return v6;
 }
 
-namespace {
-
-void valenceShares(const TriMesh& mesh, double& v6Pct, double& boundaryV4Pct)
-{
-    // Valence = distinct neighbours through edges; interior = on no boundary edge (one face).
-    const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
-    std::vector<int> valence(mesh.vertexCount(), 0);
-    std::vector<char> onBoundary(mesh.vertexCount(), 0);
-    for (int e = 0; e < edges.edgeCount(); ++e) {
-        const auto [a, b] = edges.ends[e];
-        ++valence[a];
-        ++valence[b];
-        if (edges.isBorder(e)) onBoundary[a] = onBoundary[b] = 1;
-    }
-    int interior = 0, regular = 0, border = 0, borderRegular = 0;
-    for (int v = 0; v < mesh.vertexCount(); ++v) {
-        if (valence[v] == 0) continue;
-        if (onBoundary[v]) {
-            // Three equilateral triangles fill the half-plane at a straight boundary.
-            ++border;
-            borderRegular += valence[v] == 4;
-            continue;
-        }
-        ++interior;
-        regular += valence[v] == 6;
-    }
-    v6Pct = interior > 0 ? 100.0 * regular / interior : 0.0;
-    if (border > 0) boundaryV4Pct = 100.0 * borderRegular / border;
-}
-
-}  // namespace
 
 double boundaryDistance(const TriMesh& mesh, const TriMesh& reference)
 {

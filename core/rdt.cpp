@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace fieldcvt {
@@ -155,19 +156,13 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
         result.seedOfVertex.push_back(seedOf(s));
     }
     result.mesh.vertices.resize(candidateOfVertex.size());
-    std::vector<int> faceOfCandidate(n, -1);
+    result.faceOfVertex.resize(candidateOfVertex.size());
 #pragma omp parallel for schedule(static)
-    for (int v = 0; v < static_cast<int>(candidateOfVertex.size()); ++v) {
-        const std::pair<Vec3, int> placed = position(candidateOfVertex[v]);
-        result.mesh.vertices[v] = placed.first;
-        faceOfCandidate[candidateOfVertex[v]] = placed.second;
-    }
+    for (int v = 0; v < static_cast<int>(candidateOfVertex.size()); ++v)
+        std::tie(result.mesh.vertices[v], result.faceOfVertex[v]) = position(candidateOfVertex[v]);
     result.mesh.faces.reserve(faces.size());
     for (const auto& t : faces) result.mesh.faces.push_back({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
-    std::vector<int> originalOfVertex(candidateOfVertex);
-    result.splitVertices = splitNonManifoldVertices(result.mesh, result.seedOfVertex, &originalOfVertex);
-    result.faceOfVertex.resize(result.mesh.vertices.size());
-    for (size_t v = 0; v < result.faceOfVertex.size(); ++v) result.faceOfVertex[v] = faceOfCandidate[originalOfVertex[v]];
+    result.splitVertices = splitNonManifoldVertices(result.mesh, result.seedOfVertex, &result.faceOfVertex);
     if (result.splitVertices > 0)
         result.warnings.push_back(std::to_string(result.splitVertices) +
                                   " output vertices joined separate fans of faces (a restricted cell in several pieces: thin parts or "

@@ -87,6 +87,32 @@ VertexRole roleOf(SampleConstraint c)
     return VertexRole::Free;
 }
 
+// `first` on the calling thread and `second` on another one at the same time (when `together`
+// and there are threads; else one after the other), for two serial jobs that do not depend on
+// each other. An exception of either is rethrown once both are done (first's if both throw).
+template <class First, class Second>
+void sideBySide(bool together, First&& first, Second&& second)
+{
+    std::exception_ptr failures[2];
+#pragma omp parallel num_threads(2) if (together && omp_get_max_threads() > 1)
+    {
+        const int thread = omp_get_thread_num();
+        const bool alone = omp_get_num_threads() == 1;
+        try {
+            if (thread == 0) first();
+        } catch (...) {
+            failures[0] = std::current_exception();
+        }
+        try {
+            if (thread == 1 || (alone && !failures[0])) second();
+        } catch (...) {
+            failures[1] = std::current_exception();
+        }
+    }
+    for (const std::exception_ptr& failure : failures)
+        if (failure) std::rethrow_exception(failure);
+}
+
 // Runs the stages in order, timing each and reporting overall progress.
 class Pipeline {
 public:
@@ -185,24 +211,13 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
             // add to the optimisation's peak memory (about 110 bytes a face).
             constexpr int kMaxEarlyTreeFaces = 500000;
             const bool early = surface.faceCount() <= kMaxEarlyTreeFaces;
-            std::exception_ptr failure;
-#pragma omp parallel num_threads(2) if (early && omp_get_max_threads() > 1)
-            {
-                // The simplification on the main thread (whose heap keeps the CLI's padding).
-                const bool simplifying = omp_get_thread_num() == 0;
-                try {
-                    if (simplifying)
-                        coarse = simplifyMesh(surface, simplify);
-                    if (omp_get_num_threads() == 1 || !simplifying) {
-                        if (early) inputTree = std::make_unique<ClosestPointTree>(surface);
-                        result.inputTopology = computeTopology(surface);  // for the report: meanwhile too
-                    }
-                } catch (...) {
-#pragma omp critical(fcvt_simplify_failure)
-                    if (!failure || simplifying) failure = std::current_exception();
-                }
-            }
-            if (failure) std::rethrow_exception(failure);
+            // The simplification on the main thread (whose heap keeps the CLI's padding).
+            sideBySide(
+                early, [&] { coarse = simplifyMesh(surface, simplify); },
+                [&] {
+                    if (early) inputTree = std::make_unique<ClosestPointTree>(surface);
+                    result.inputTopology = computeTopology(surface);  // for the report: meanwhile too
+                });
             // The same feature edges (both ends kept, so still edges), corners found again.
             std::vector<std::array<int, 2>> edges;
             for (const auto& [a, b] : features.edges) edges.push_back({coarse.coarseVertex[a], coarse.coarseVertex[b]});
@@ -250,20 +265,9 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     // serial: built side by side (bunny 5000: ~6 and ~5 ms).
     std::unique_ptr<EnergyFunction> energyBuilt;
     std::unique_ptr<const ClosestPointTree> treeBuilt;
-    {
-        std::exception_ptr failure;
-#pragma omp parallel num_threads(2) if (omp_get_max_threads() > 1)
-        {
-            try {
-                if (omp_get_thread_num() == 0) energyBuilt = std::make_unique<EnergyFunction>(optSurface, rho);
-                if (omp_get_thread_num() == 1 || omp_get_num_threads() == 1) treeBuilt = std::make_unique<ClosestPointTree>(optSurface);
-            } catch (...) {
-#pragma omp critical(fcvt_build_failure)
-                if (!failure || omp_get_thread_num() == 0) failure = std::current_exception();
-            }
-        }
-        if (failure) std::rethrow_exception(failure);
-    }
+    sideBySide(
+        true, [&] { energyBuilt = std::make_unique<EnergyFunction>(optSurface, rho); },
+        [&] { treeBuilt = std::make_unique<ClosestPointTree>(optSurface); });
     EnergyFunction& energy = *energyBuilt;
     const ClosestPointTree& tree = *treeBuilt;
     DirectionField field;
@@ -396,8 +400,8 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         options.triangles = true;
         const RvdResult& rvd = energy.diagram(seeds, options);
         // On cell pieces (multi-nerve RDT); the samples' frame faces are hints for their closest points.
-        const std::vector<int>& hints = energy.lastFrameFaces();
-        RdtResult rdt = extractRdt(seeds, rvd, tree, hints.size() == seeds.size() ? hints : std::vector<int>{});
+        const std::vector<int>& hints = energy.lastFrameFaces(), none;
+        RdtResult rdt = extractRdt(seeds, rvd, tree, hints.size() == seeds.size() ? hints : none);
         result.warnings.insert(result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         result.mesh = std::move(rdt.mesh);
         if (result.mesh.faces.empty())

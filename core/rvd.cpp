@@ -56,7 +56,6 @@ namespace {
 // nanoflann's k-nearest result set with a known upper bound on the k-th distance: subtrees
 // beyond it are skipped from the start. The answer is the same as without the bound as long as
 // the bound is not below the true k-th distance.
-
 class BoundedKnnResult {
 public:
     using DistanceType = double;  // nanoflann >= 1.5 reads these
