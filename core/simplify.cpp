@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <string>
 #include <utility>
 
@@ -138,24 +137,44 @@ public:
             for (int w : ring)
                 if (v < w && edgeCandidate(v, w, c)) initial.push_back(c);
         }
-        heap_ = decltype(heap_)(std::greater<Candidate>(), std::move(initial));
+        heap_ = std::move(initial);
+        std::make_heap(heap_.begin(), heap_.end(), std::greater<Candidate>());
+        size_t pushesSinceCompaction = 0;
         while (aliveFaces_ > params_.targetFaces && !heap_.empty()) {
-            const Candidate c = heap_.top();
-            heap_.pop();
-            // The versions first (4 bytes a vertex, against a face list's 24): most stale
-            // entries fail there, and a removed vertex's version moved on too.
-            if (version_[c.from] != c.fromVersion || version_[c.to] != c.toVersion || !vertexAlive(c.from) || !vertexAlive(c.to))
-                continue;
+            std::pop_heap(heap_.begin(), heap_.end(), std::greater<Candidate>());
+            const Candidate c = heap_.back();
+            heap_.pop_back();
+            if (!current(c)) continue;
             if (!collapseAllowed(c.from, c.to)) continue;
             collapse(c.from, c.to);
             neighbours(c.to, ring);
-            for (int w : ring) pushEdge(c.to, w);
+            for (int w : ring) pushesSinceCompaction += pushEdge(c.to, w);
+            // Each push makes the edge's previous entry stale (bunny 5000: 158 000 of 184 000
+            // pops were stale entries). Dropping them in one linear pass once the pushes since
+            // the last pass reach half the heap costs less than popping them one by one; the
+            // current entries pop in the same order (the order is total on them), so the result
+            // is the same. Bunny 5000's simplification 111 -> 74 ms (medians of 9, one thread;
+            // a pass at a quarter of the heap 91 ms, at the whole heap 82 ms).
+            if (2 * pushesSinceCompaction > heap_.size()) {
+                heap_.erase(std::remove_if(heap_.begin(), heap_.end(), [&](const Candidate& e) { return !current(e); }),
+                            heap_.end());
+                std::make_heap(heap_.begin(), heap_.end(), std::greater<Candidate>());
+                pushesSinceCompaction = 0;
+            }
         }
         return compact();
     }
 
 private:
     bool vertexAlive(int v) const { return !vertexFaces_[v].empty(); }
+
+    //! Whether a heap entry still describes its edge: neither end has changed since it was made.
+    //! The versions first (4 bytes a vertex, against a face list's 24): most stale entries fail
+    //! there, and a removed vertex's version moved on too.
+    bool current(const Candidate& c) const
+    {
+        return version_[c.from] == c.fromVersion && version_[c.to] == c.toVersion && vertexAlive(c.from) && vertexAlive(c.to);
+    }
 
     void neighbours(int v, std::vector<int>& out) const
     {
@@ -191,10 +210,13 @@ private:
         out = {orderKey(best), from, to, version_[from], version_[to]};
         return true;
     }
-    void pushEdge(int u, int w)
+    bool pushEdge(int u, int w)
     {
         Candidate c;
-        if (edgeCandidate(u, w, c)) heap_.push(c);
+        if (!edgeCandidate(u, w, c)) return false;
+        heap_.push_back(c);
+        std::push_heap(heap_.begin(), heap_.end(), std::greater<Candidate>());
+        return true;
     }
 
     bool collapseAllowed(int from, int to)
@@ -301,7 +323,7 @@ private:
     std::vector<std::vector<int>> vertexFaces_;
     std::vector<Quadric> quadric_;
     std::vector<std::uint32_t> version_;
-    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
+    std::vector<Candidate> heap_;  //!< a binary min-heap (std::greater) of collapses, stale ones included
     std::vector<int> ringFrom_, ringTo_;
     int aliveFaces_ = 0;
 };
