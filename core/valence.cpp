@@ -1345,20 +1345,35 @@ void ValenceOptimizer::relax()
     const std::vector<Vec3> startPos = pos_;
     std::vector<Vec3> lastMove(n, Vec3::Zero());  // momentum; zero after a revert
     const double maxDrift = kMaxDrift * edgeLength_;
+    // Where each vertex's frame was interpolated (face -1: not yet): a vertex whose closest point
+    // has not changed since (it stopped, or was put back) keeps its frame.
+    std::vector<int> frameFace(n, -1);
+    std::vector<Vec3> frameBarycentric(n);
+    // The safety net's measures of every face after an iteration are the next iteration's
+    // "before" (the net measures every face once, and again each face of a vertex it puts back).
+    std::vector<double> faceAngleAfter(faces_.size()), faceDotAfter(faces_.size());
     for (int iteration = 0; iteration < params_.relaxIterations; ++iteration) {
         if (surface_.field && params_.fieldWeight > 0) {
 #pragma omp parallel for schedule(static)
             for (int v = 0; v < n; ++v) {
-                if (!vertexAlive_[v] || closest_[v].face < 0) continue;
-                const FieldSample s = interpolateField(surface_.input, *surface_.field, closest_[v].face, closest_[v].barycentric);
+                const ClosestPoint& c = closest_[v];
+                if (!vertexAlive_[v] || c.face < 0 || (c.face == frameFace[v] && c.barycentric == frameBarycentric[v])) continue;
+                const FieldSample s = interpolateField(surface_.input, *surface_.field, c.face, c.barycentric);
                 frameN[v] = s.normal;
                 frameD[v] = s.direction;
+                frameFace[v] = c.face;
+                frameBarycentric[v] = c.barycentric;
             }
         }
         const int faceCount = static_cast<int>(faces_.size());
+        if (iteration == 0) {
 #pragma omp parallel for schedule(static)
-        for (int f = 0; f < faceCount; ++f)
-            if (faceAlive_[f]) faceMeasures(f, faceAngleBefore[f], faceDotBefore[f]);
+            for (int f = 0; f < faceCount; ++f)
+                if (faceAlive_[f]) faceMeasures(f, faceAngleBefore[f], faceDotBefore[f]);
+        } else {
+            faceAngleBefore.swap(faceAngleAfter);
+            faceDotBefore.swap(faceDotAfter);
+        }
         oldPos = pos_;
         oldClosest = closest_;
         oldNormal = normal_;
@@ -1443,7 +1458,8 @@ void ValenceOptimizer::relax()
 #pragma omp parallel for schedule(static)
             for (int k = 0; k < static_cast<int>(check.size()); ++k) {
                 const int f = check[k];
-                double angle, dot;
+                double& angle = faceAngleAfter[f];
+                double& dot = faceDotAfter[f];
                 faceMeasures(f, angle, dot);
                 const bool folded = dot < std::min(kRelaxMinNormalDot, faceDotBefore[f]);
                 const bool sharper = angle < minAngle && angle < faceAngleBefore[f] - 1e-9;
