@@ -1275,6 +1275,9 @@ void ValenceOptimizer::relax()
         if (faceAlive_[f]) liveFace[f] = static_cast<int>(liveFaces.size()), liveFaces.push_back(faces_[f]);
     const EdgeTable liveEdges = buildEdgeTable(liveFaces, n);
     std::vector<double> edgeSag(liveEdges.edgeCount()), centroidSag(liveFaces.size());
+    // Per face, an upper bound of each sag point's distance to the surface (sagPoints' order:
+    // the centroid, then the midpoints of edges 01, 12, 20) while its corners are sagCorners.
+    std::vector<std::array<double, 4>> pointSag(faces_.size());
     auto allFaceSags = [&](std::vector<double>& sag) {
 #pragma omp parallel for schedule(static)
         for (int e = 0; e < liveEdges.edgeCount(); ++e) {
@@ -1295,21 +1298,23 @@ void ValenceOptimizer::relax()
         for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
             const int g = liveFace[f];
             if (g < 0) continue;
-            sag[f] = std::max({centroidSag[g], edgeSag[liveEdges.edgeOf(g, 0)], edgeSag[liveEdges.edgeOf(g, 1)],
-                               edgeSag[liveEdges.edgeOf(g, 2)]});
+            pointSag[f] = {centroidSag[g], edgeSag[liveEdges.edgeOf(g, 0)], edgeSag[liveEdges.edgeOf(g, 1)],
+                           edgeSag[liveEdges.edgeOf(g, 2)]};
+            sag[f] = *std::max_element(pointSag[f].begin(), pointSag[f].end());
         }
     };
     allFaceSags(faceSagStart);
     // The check only asks whether a face's sag exceeds its limit. The distance to the surface is
-    // 1-Lipschitz and each of a face's sag points (centroid, edge midpoints) moves by at most the
-    // mean of its corners' moves, so a face's last measured sag plus the largest of those bounds
-    // its sag now: when the bound is under the limit (less a rounding margin) the queries are
-    // skipped and the answer is the one they would give. Per face: the last measured sag and its
-    // corners then.
-    std::vector<double> sagMeasured(faceSagStart);
+    // 1-Lipschitz: a sag point moves by at most the mean of its corners' moves (an edge midpoint
+    // of its two, the centroid of all three), so its last bound plus that move bounds its
+    // distance now. Only the points whose bound reaches the limit (less a rounding margin) are
+    // measured again: first by a walk (an upper bound, a fraction of a tree query's cost), then,
+    // where the walk's bound still exceeds the limit, exactly by the tree. The answer is the one
+    // the four exact distances would give (bunny 5000: 80 000 point walks and 3 600 tree queries,
+    // against 112 000 and 14 000 when a face's four points were measured together).
     std::vector<std::array<Vec3, 3>> sagCorners(faces_.size());
-    // Per face, where the walks of its sag points ended last time: the next walks start there
-    // (the bound may differ with the start, the answers do not: the tree decides above it).
+    // Per face and sag point, where its walk ended last time: the next walk starts there (the
+    // bound may differ with the start, the answers do not: the tree decides above it).
     std::vector<std::array<int, 4>> sagWalkStarts(faces_.size(), {-1, -1, -1, -1});
     for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
         if (faceAlive_[f]) sagCorners[f] = {pos_[faces_[f][0]], pos_[faces_[f][1]], pos_[faces_[f][2]]};
@@ -1317,17 +1322,30 @@ void ValenceOptimizer::relax()
         const Face& t = faces_[f];
         double m[3];
         for (int k = 0; k < 3; ++k) m[k] = (pos_[t[k]] - sagCorners[f][k]).norm();
-        // An edge midpoint moved by at most the mean of its corners' moves, the centroid by at
-        // most the mean of all three: the largest of these is the largest pair's mean.
-        const double moved = 0.5 * (m[0] + m[1] + m[2] - std::min({m[0], m[1], m[2]}));
-        if (sagMeasured[f] + moved <= limit * (1 - 1e-9)) return false;
+        const double moved[4] = {(m[0] + m[1] + m[2]) / 3, 0.5 * (m[0] + m[1]), 0.5 * (m[1] + m[2]), 0.5 * (m[2] + m[0])};
+        std::array<double, 4>& bound = pointSag[f];
+        const double safe = limit * (1 - 1e-9);
+        bool within = true;
+        for (int k = 0; k < 4; ++k) within = within && bound[k] + moved[k] <= safe;
+        if (within) return false;
         sagCorners[f] = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
-        // A walk's bound under the limit answers as well (the exact sag is at most the bound),
-        // at a fraction of the tree queries' cost; the bound serves the Lipschitz test above.
-        sagMeasured[f] = faceSagBound(f, sagWalkStarts[f]);
-        if (sagMeasured[f] <= limit) return false;
-        sagMeasured[f] = faceSag(f);
-        return sagMeasured[f] > limit;
+        Vec3 points[4];
+        int starts[4];
+        sagPoints(f, points, starts);
+        bool exceeds = false;
+        for (int k = 0; k < 4; ++k) {
+            if (bound[k] + moved[k] <= safe) {
+                bound[k] += moved[k];  // still a bound at the corners now
+                continue;
+            }
+            int& walkStart = sagWalkStarts[f][k];
+            if (walkStart < 0) walkStart = starts[k];
+            bound[k] = walk_->distanceBound(points[k], walkStart, &walkStart);
+            if (bound[k] <= limit || exceeds) continue;  // one point over the limit answers
+            bound[k] = (surface_.tree.closest(points[k], starts[k]).point - points[k]).norm();
+            exceeds = bound[k] > limit;
+        }
+        return exceeds;
     };
     auto faceMeasures = [&](int f, double& angle, double& dot) {
         const Face& t = faces_[f];
