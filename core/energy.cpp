@@ -103,7 +103,14 @@ void EnergyFunction::setField(const DirectionField* field, const ClosestPointTre
 const RvdResult& EnergyFunction::diagram(const std::vector<Vec3>& seeds, const RvdOptions& options)
 {
     diagram_.compute(seeds, options, rvd_);
+    rvdOfSeeds_ = false;
     return rvd_;
+}
+
+const RvdResult& EnergyFunction::diagramAt(const std::vector<Vec3>& seeds)
+{
+    if (rvdOfSeeds_ && seeds == seeds_) return rvd_;
+    return diagram(seeds, RvdOptions{});
 }
 
 FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points) const
@@ -156,6 +163,7 @@ EnergyValue EnergyFunction::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& 
     RvdOptions options;
     options.edges = field_ != nullptr;
     diagram_.compute(seeds_, options, rvd_);
+    rvdOfSeeds_ = true;
 
     EnergyValue value;
     gradient.resize(x.size());

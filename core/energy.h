@@ -69,6 +69,11 @@ public:
     //! Computes the RVD of `seeds` with the requested extras (no energy bookkeeping).
     const RvdResult& diagram(const std::vector<Vec3>& seeds, const RvdOptions& options);
 
+    //! The masses, moments and energies of the RVD of `seeds`: the last evaluation's when it was
+    //! of exactly these seeds (the optimiser's last step is usually the point it returns), else
+    //! computed like diagram(seeds, RvdOptions{}).
+    const RvdResult& diagramAt(const std::vector<Vec3>& seeds);
+
     //! The field frames at `points` (their closest points on the surface).
     FieldFrames framesAt(const std::vector<Vec3>& points) const;
     //! The same; `faces` holds a hint per point (the face of a nearby answer, or -1) and
@@ -95,6 +100,7 @@ private:
     RestrictedVoronoiDiagram diagram_;
     RvdResult rvd_;
     std::vector<Vec3> seeds_;
+    bool rvdOfSeeds_ = false;  //!< rvd_ is the diagram of seeds_ (set by evaluate, cleared by diagram)
     const DirectionField* field_ = nullptr;
     const ClosestPointTree* tree_ = nullptr;
     double lambda_ = 0;

@@ -72,7 +72,7 @@ void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector
 
 int reseedEmptyCells(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, std::uint64_t seed)
 {
-    const RvdResult& rvd = energy.diagram(seeds, RvdOptions{});
+    const RvdResult& rvd = energy.diagramAt(seeds);
     const std::vector<char>& frozen = energy.frozen();
     std::vector<int> empty;
     for (size_t i = 0; i < seeds.size(); ++i)

@@ -32,6 +32,33 @@ TEST(CvtEnergy, GradientVanishesAtALatticeCvt)
     EXPECT_LT(gradient.cwiseAbs().maxCoeff(), 1e-14);
 }
 
+TEST(CvtEnergy, DiagramAtReusesTheLastEvaluationOnlyForItsSeeds)
+{
+    // reseedEmptyCells asks for the masses at the optimiser's result, which is usually the last
+    // point evaluated: that diagram is returned, the same figures as a fresh one; other seeds,
+    // or a diagram() in between, get a fresh one.
+    const TriMesh surface = testmesh::torus(48, 24);
+    std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 150, 11);
+    EnergyFunction energy(surface);
+    Eigen::VectorXd gradient;
+    energy.evaluate(flatten(seeds), gradient);
+    const RvdResult& reused = energy.diagramAt(seeds);
+    EXPECT_EQ(&reused, &energy.lastDiagram());
+    const std::vector<double> masses = reused.mass;
+    const std::vector<Vec3> moments = reused.moment;
+    EnergyFunction fresh(surface);
+    const RvdResult& computed = fresh.diagram(seeds, RvdOptions{});
+    EXPECT_EQ(masses, computed.mass);
+    EXPECT_EQ(moments, computed.moment);
+
+    std::vector<Vec3> moved = seeds;
+    moved[7] += Vec3(0.01, 0.0, 0.0);
+    const RvdResult& other = energy.diagramAt(moved);
+    EXPECT_EQ(other.mass, fresh.diagram(moved, RvdOptions{}).mass);  // computed for `moved`
+    // rvd_ now holds `moved`'s diagram: asking for the evaluated seeds computes theirs again.
+    EXPECT_EQ(energy.diagramAt(seeds).mass, masses);
+}
+
 TEST(FieldFrames, HintsFromThePreviousEvaluationFollowTheSurface)
 {
     // The frames are looked up from the previous answers' faces (samples move little between
