@@ -965,13 +965,21 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
         for (long long i = 0; i < static_cast<long long>(n); ++i) {
             RvdEdge* first = bucketed.data() + start[i];
             RvdEdge* last = bucketed.data() + start[i + 1];
-            std::stable_sort(first, last, [](const RvdEdge& x, const RvdEdge& y) { return x.j < y.j; });
+            // Pieces with the same second seed summed in chunk order (into the first of them),
+            // then the few merged edges sorted by second seed (insertion sort: a seed has a
+            // dozen pieces or so, half a dozen edges).
             RvdEdge* w = first;
             for (RvdEdge* r = first; r != last; ++r) {
-                if (w != first && (w - 1)->j == r->j)
-                    (w - 1)->length += r->length;
-                else
-                    *w++ = *r;
+                RvdEdge* same = first;
+                while (same != w && same->j != r->j) ++same;
+                if (same != w) same->length += r->length;
+                else *w++ = *r;
+            }
+            for (RvdEdge* r = first + 1; r < w; ++r) {
+                const RvdEdge moving = *r;
+                RvdEdge* to = r;
+                for (; to != first && (to - 1)->j > moving.j; --to) *to = *(to - 1);
+                *to = moving;
             }
             kept[i + 1] = static_cast<int>(w - first);
         }
