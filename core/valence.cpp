@@ -299,6 +299,10 @@ private:
     //! faceSag(f), remembered with f's corner positions: an operation's check measures the faces
     //! around it before, and most of them were measured by an earlier check and have not moved.
     double cachedFaceSag(int f);
+    //! cachedFaceSag(f) when remembered for f's corners, else faceSagBound(f): at least the sag.
+    double knownFaceSag(int f) const;
+    //! The largest sag an operation may leave on the faces around it, from `faces` before it.
+    double operationSagLimit(const std::vector<int>& faces);
     //! The alive faces around `verts`, sorted, without repeats.
     void facesAround(const std::vector<int>& verts, std::vector<int>& faces) const;
     //! Smallest angle (radians) and smallest normal agreement over `faces`.
@@ -1180,15 +1184,43 @@ bool ValenceOptimizer::applyTopology(const Op& op, std::vector<int>& smooth, std
     return true;
 }
 
+double ValenceOptimizer::operationSagLimit(const std::vector<int>& faces)
+{
+    // The limit grows with the largest sag before, max(min(growth × sag, sag + step), floor).
+    // It is monotone in the sag, so a face whose upper bound (its cached exact sag, else a walk's
+    // bound) cannot lift it above the floor needs no exact measure: the same limit, bit for bit,
+    // with tree queries only where a face may set it.
+    const double floor = kMaxSag * edgeLength_;
+    auto grown = [&](double sag) { return std::min(kOperationSagGrowth * sag, sag + kOperationSagStep * edgeLength_); };
+    double limit = floor;
+    for (int f : faces) {
+        const double bound = knownFaceSag(f);
+        if (grown(bound) <= floor) continue;  // (a NaN bound is measured)
+        limit = std::max(limit, grown(cachedFaceSag(f)));
+    }
+    return limit;
+}
+
+double ValenceOptimizer::knownFaceSag(int f) const
+{
+    if (f < static_cast<int>(sagCache_.size())) {
+        const SagEntry& entry = sagCache_[f];
+        const Face& t = faces_[f];
+        if (entry.sag >= 0 && entry.corners == std::array<Vec3, 3>{pos_[t[0]], pos_[t[1]], pos_[t[2]]}) return entry.sag;
+    }
+    return faceSagBound(f);
+}
+
 bool ValenceOptimizer::tryApply(const Candidate& cand, std::vector<int>& changed)
 {
     changed.clear();
     const std::vector<int>& region = cand.region;  // faces around it are compared before and after
     std::vector<int> faces;
     facesAround(region, faces);
-    double angleBefore, dotBefore, sagBefore = 0;
+    double angleBefore, dotBefore;
     localShape(faces, angleBefore, dotBefore);
-    for (int f : faces) sagBefore = std::max(sagBefore, cachedFaceSag(f));
+
+    const double sagLimit = operationSagLimit(faces);
 
     const size_t mark = undo_.size();
     logging_ = true;
@@ -1212,8 +1244,6 @@ bool ValenceOptimizer::tryApply(const Candidate& cand, std::vector<int>& changed
         const bool sharper = angleAfter < minAngle && angleAfter < angleBefore - 1e-9;
         // A flip or collapse across a crease cuts it (d_H): refused like a fold (measured last,
         // the costliest test).
-        const double grown = std::min(kOperationSagGrowth * sagBefore, sagBefore + kOperationSagStep * edgeLength_);
-        const double sagLimit = std::max(grown, kMaxSag * edgeLength_);
         ok = !folded && !sharper && angleAfter > 0 && !sagExceeds(faces, sagLimit);
     }
     if (!ok) {
