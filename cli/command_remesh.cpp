@@ -231,8 +231,10 @@ int runRemesh(const std::vector<std::string>& args)
     std::vector<std::string> warnings;
     for (const std::string& note : readInfo.notes) warnings.push_back(inPath + ": " + note);
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
-    const TopologySummary outputTopology = computeTopology(result.mesh);
-    const double meanEdge = meanEdgeLength(result.mesh);
+    // The output's topology and mean edge length are only printed or reported.
+    const bool described = !quiet || a.has("report");
+    const TopologySummary outputTopology = described ? computeTopology(result.mesh) : TopologySummary{};
+    const double meanEdge = described ? meanEdgeLength(result.mesh) : 0.0;
     const double totalSeconds = secondsSince(start);
 
     if (auto reportPath = a.text("report")) {

@@ -1,7 +1,6 @@
 #include "simplify.h"
 
 #include "errors.h"
-#include "mesh_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +101,12 @@ public:
         locked_.assign(n, 0);
         for (int v = 0; v < n && !params.locked.empty(); ++v) locked_[v] = params.locked[v];
         vertexFaces_.assign(n, {});
+        {
+            std::vector<int> degree(n, 0);
+            for (const Face& t : faces_)
+                for (int v : t) ++degree[v];
+            for (int v = 0; v < n; ++v) vertexFaces_[v].reserve(degree[v]);
+        }
         quadric_.assign(n, {});
         faceAlive_.assign(faces_.size(), 1);
         version_.assign(n, 0);
@@ -115,10 +120,22 @@ public:
             }
             for (int v : t) vertexFaces_[v].push_back(f);
         }
-        // Vertices on a border edge (or on an edge of more than two faces) stay.
-        const EdgeTable edges = buildEdgeTable(input);
-        for (int e = 0; e < edges.edgeCount(); ++e)
-            if (edges.faceCount(e) != 2) locked_[edges.ends[e][0]] = locked_[edges.ends[e][1]] = 1;
+        // Vertices on a border edge (or on an edge of more than two faces) stay: around v, a
+        // neighbour w appears once per face holding the edge vw, twice on an interior edge.
+        std::vector<int> around;
+        for (int v = 0; v < n; ++v) {
+            around.clear();
+            for (int f : vertexFaces_[v])
+                for (int w : faces_[f])
+                    if (w != v) around.push_back(w);
+            std::sort(around.begin(), around.end());
+            for (size_t r = 0; r < around.size() && !locked_[v];) {
+                size_t e = r;
+                while (e < around.size() && around[e] == around[r]) ++e;
+                if (e - r != 2) locked_[v] = 1;
+                r = e;
+            }
+        }
         aliveFaces_ = static_cast<int>(faces_.size());
     }
 
