@@ -37,6 +37,10 @@ bool isZeroArea(const TriMesh& mesh, const Face& t)
 void triangulatePolygon(const std::vector<Vec3>& points, const std::vector<int>& corners, std::vector<Face>& faces)
 {
     const int n = static_cast<int>(corners.size());
+    if (n == 3) {  // a triangle as it is (most faces of most files), without the work lists below
+        faces.push_back({corners[0], corners[1], corners[2]});
+        return;
+    }
     auto fan = [&](const std::vector<int>& order) {
         for (std::size_t i = 1; i + 1 < order.size(); ++i) faces.push_back({corners[order[0]], corners[order[i]], corners[order[i + 1]]});
     };
