@@ -28,7 +28,7 @@ int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
 
 }  // namespace
 
-TriMesh prepareInput(const TriMesh& input, InputReport& report, bool mergeDuplicateVertices)
+TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
 {
     report = InputReport{};
     if (input.faces.empty())
@@ -52,7 +52,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool mergeDuplic
     // anything else: the faces on either side of a seam then share their edge.
     std::vector<int> rep(n);
     std::iota(rep.begin(), rep.end(), 0);
-    if (mergeDuplicateVertices) {
+    if (!repaired) {
         std::vector<int> order;
         order.reserve(n);
         for (int v = 0; v < n; ++v)
@@ -70,7 +70,9 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool mergeDuplic
     }
 
     // 2. Faces: drop degenerate ones (repeated corner, zero area; thin needles of non-zero area
-    // are fine for the RVD and kept) and exact duplicates (same corner set).
+    // are fine for the RVD and kept) and exact duplicates (same corner set; not searched for in
+    // a repaired mesh: the repair removed every face whose corner set an earlier face has, and
+    // its vertex splits give the faces of one fan the same copy).
     std::vector<Face> faces;
     std::vector<int> faceOrigin;  // clean face -> input face, for messages
     faces.reserve(input.faces.size());
@@ -88,7 +90,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool mergeDuplic
         faces.push_back(t);
         faceOrigin.push_back(f);
     }
-    {
+    if (!repaired) {
         std::vector<std::pair<std::array<int, 3>, int>> keys;
         keys.reserve(faces.size());
         for (int f = 0; f < static_cast<int>(faces.size()); ++f) {

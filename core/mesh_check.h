@@ -32,9 +32,9 @@ struct InputReport {
 //! several fans split into one vertex per fan; unreferenced vertices removed (the clean mesh
 //! keeps the input's vertex order, split copies come last). Throws InvalidInputError (one line:
 //! what and where) for an empty mesh, a point cloud, an out-of-range index, a non-finite
-//! coordinate, a non-manifold edge or a non-orientable component. `mergeDuplicateVertices`
-//! false skips the merge (the repair stage, repair.h, has merged them and split some on
-//! purpose).
-TriMesh prepareInput(const TriMesh& input, InputReport& report, bool mergeDuplicateVertices = true);
+//! coordinate, a non-manifold edge or a non-orientable component. `repaired`: the input is
+//! repairMesh's output (repair.h), which has merged duplicate vertices (and split some again on
+//! purpose: not merged here) and removed duplicate faces (not searched for here).
+TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired = false);
 
 }  // namespace fieldcvt

@@ -509,7 +509,7 @@ TriMesh repairAndPrepare(const TriMesh& input, const RepairParams& params, Repai
 {
     const TriMesh repaired = repairMesh(input, params, repair);
     if (repair.skipped) return prepareInput(input, report);
-    TriMesh clean = prepareInput(repaired, report, false);
+    TriMesh clean = prepareInput(repaired, report, true);
     std::vector<int> cleanIndex(input.vertices.size(), -1);
     for (size_t v = 0; v < cleanIndex.size(); ++v)
         if (repair.vertexMap[v] >= 0) cleanIndex[v] = report.cleanIndex[size_t(repair.vertexMap[v])];

@@ -71,9 +71,9 @@ struct RepairReport {
 //! The repaired copy of `input` (see the top of this file).
 TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairReport& report);
 
-//! repairMesh, then prepareInput on the result (without its exact-duplicate merge, which would
-//! undo the splits); `input` of InputReport::cleanIndex is the original input. Repair notes
-//! come first in InputReport::notes.
+//! repairMesh, then prepareInput on the result (as repaired: without its exact-duplicate merge,
+//! which would undo the splits, nor its duplicate-face search); `input` of
+//! InputReport::cleanIndex is the original input. Repair notes come first in InputReport::notes.
 TriMesh repairAndPrepare(const TriMesh& input, const RepairParams& params, RepairReport& repair,
                          InputReport& report);
 
