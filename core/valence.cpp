@@ -1646,12 +1646,20 @@ void ValenceOptimizer::lowerLargestSags()
     std::vector<double> bound(faceCount, -1.0);
     std::vector<int> order, faces, verts;
     std::vector<std::pair<double, int>> measured;
+    std::vector<int> movedVertices;  // by the last round
     for (int round = 0; round < kSagRepairRounds; ++round) {
         // The walks' bounds (at least the sag, equal to it where the walk settles: most faces)
         // rank the faces; the exact sag is measured down the ranking only until the bounds
         // fall under the band of the largest sag found, so only a few faces need tree queries.
+        // After the first round only the faces of the vertices it moved are walked again (a
+        // face whose corners and their closest points are as they were has the same bound).
+        if (round == 0) {
 #pragma omp parallel for schedule(static)
-        for (int f = 0; f < faceCount; ++f) bound[f] = faceAlive_[f] ? faceSagBound(f) : -1.0;
+            for (int f = 0; f < faceCount; ++f) bound[f] = faceAlive_[f] ? faceSagBound(f) : -1.0;
+        } else {
+            for (int v : movedVertices)
+                for (int f : vertexFaces_[v]) bound[f] = faceAlive_[f] ? faceSagBound(f) : -1.0;
+        }
         order.clear();
         for (int f = 0; f < faceCount; ++f)
             if (faceAlive_[f]) order.push_back(f);
@@ -1676,7 +1684,13 @@ void ValenceOptimizer::lowerLargestSags()
         std::sort(verts.begin(), verts.end());
         verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
         bool moved = false;
-        for (int v : verts) moved = lowerSagAround(v, (1 - kSagRepairBand) * largest) || moved;  // Gauss–Seidel
+        movedVertices.clear();
+        for (int v : verts) {  // Gauss–Seidel
+            const Vec3 position = pos_[v];
+            const int face = closest_[v].face;
+            moved = lowerSagAround(v, (1 - kSagRepairBand) * largest) || moved;
+            if (pos_[v] != position || closest_[v].face != face) movedVertices.push_back(v);
+        }
         if (!moved) return;
     }
 }
