@@ -975,7 +975,7 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
                 if (same != w) same->length += r->length;
                 else *w++ = *r;
             }
-            for (RvdEdge* r = first + 1; r < w; ++r) {
+            for (RvdEdge* r = first; r != w; ++r) {  // (not first + 1: `first` is null when no seed has an edge)
                 const RvdEdge moving = *r;
                 RvdEdge* to = r;
                 for (; to != first && (to - 1)->j > moving.j; --to) *to = *(to - 1);

@@ -1418,7 +1418,6 @@ void ValenceOptimizer::relax()
         dot = length > 0 ? faceUnitNormal(f).dot(reference) / length : -1.0;
     };
 
-
     const std::vector<Vec3> startPos = pos_;
     std::vector<Vec3> lastMove(n, Vec3::Zero());  // momentum; zero after a revert
     const double maxDrift = kMaxDrift * edgeLength_;

@@ -45,6 +45,20 @@ TEST(Rvd, SeedsOffTheSurfaceStillPartitionIt)
     EXPECT_NEAR(sum(result.mass), surfaceArea(surface), 1e-9 * surfaceArea(surface));
 }
 
+TEST(Rvd, OneSeedHasTheWholeSurfaceAndNoEdge)
+{
+    // No edge at all: the edge merge must not step off its (empty) buffer (a fuzzer's finding,
+    // caught by UBSan in the sanitizer step).
+    const TriMesh surface = testmesh::icosphere(2);
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult result;
+    RvdOptions options;
+    options.edges = true;
+    rvd.compute({Vec3(0.1, 0.2, 0.3)}, options, result);
+    EXPECT_TRUE(result.edges.empty());
+    EXPECT_NEAR(result.mass[0], surfaceArea(surface), 1e-9 * surfaceArea(surface));
+}
+
 TEST(Rvd, SquareLatticeOnAPlaneGivesSquareCells)
 {
     // Seeds at the centres of a k x k grid on the unit square: every cell is the grid square,
