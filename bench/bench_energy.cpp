@@ -12,6 +12,7 @@
 #include "valence.h"
 #include "closest_point.h"
 #include "remesh.h"
+#include "repair.h"
 #include "rvd.h"
 #include "sampling.h"
 #include "simplify.h"
@@ -348,6 +349,28 @@ void BM_DistanceFertility3000(benchmark::State& state)
 BENCHMARK(BM_DistanceFertility3000)
     ->Args({1, 200000})->Args({1, 50000})->Args({2, 200000})->Args({2, 50000})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The input side's serial stages on bunny.obj (69 451 faces, one thread): reading the OBJ file,
+// and the repair with the strict check after it (the "prepare" stage).
+void BM_ReadBunnyObj(benchmark::State& state)
+{
+    const std::string path = std::string(FCVT_RESOURCES_DIR) + "/bunny.obj";
+    for (auto _ : state) benchmark::DoNotOptimize(readMesh(path).faces.size());
+}
+BENCHMARK(BM_ReadBunnyObj)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PrepareBunny(benchmark::State& state)
+{
+    const TriMesh input = readMesh(std::string(FCVT_RESOURCES_DIR) + "/bunny.obj");
+    RepairParams params;
+    params.vertexBudget = 5000;
+    for (auto _ : state) {
+        RepairReport repair;
+        InputReport report;
+        benchmark::DoNotOptimize(repairAndPrepare(input, params, repair, report).faces.size());
+    }
+}
+BENCHMARK(BM_PrepareBunny)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The simplification stage (one thread: it is serial) on bunny.obj at the working scale of
 // 5000 samples, to the 20 000 faces the default pipeline optimises on.
