@@ -1,6 +1,7 @@
 #include "simplify.h"
 
 #include "errors.h"
+#include "mesh_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -120,22 +121,10 @@ public:
             }
             for (int v : t) vertexFaces_[v].push_back(f);
         }
-        // Vertices on a border edge (or on an edge of more than two faces) stay: around v, a
-        // neighbour w appears once per face holding the edge vw, twice on an interior edge.
-        std::vector<int> around;
-        for (int v = 0; v < n; ++v) {
-            around.clear();
-            for (int f : vertexFaces_[v])
-                for (int w : faces_[f])
-                    if (w != v) around.push_back(w);
-            std::sort(around.begin(), around.end());
-            for (size_t r = 0; r < around.size() && !locked_[v];) {
-                size_t e = r;
-                while (e < around.size() && around[e] == around[r]) ++e;
-                if (e - r != 2) locked_[v] = 1;
-                r = e;
-            }
-        }
+        // Vertices on a border edge (or on an edge of more than two faces) stay.
+        const EdgeTable edges = buildEdgeTable(input);
+        for (int e = 0; e < edges.edgeCount(); ++e)
+            if (edges.faceCount(e) != 2) locked_[edges.ends[e][0]] = locked_[edges.ends[e][1]] = 1;
         aliveFaces_ = static_cast<int>(faces_.size());
     }
 

@@ -293,12 +293,12 @@ private:
     //! At least faceSag(f), from walks over the input (SurfaceWalk) instead of tree queries;
     //! usually equal to it.
     double faceSagBound(int f) const;
-    //! The same from the given start faces, one per sag point (-1: sagPoints'), which receive
-    //! the faces the walks ended on.
-    double faceSagBound(int f, std::array<int, 4>& starts) const;
     //! faceSag(f), remembered with f's corner positions: an operation's check measures the faces
     //! around it before, and most of them were measured by an earlier check and have not moved.
     double cachedFaceSag(int f);
+    struct SagEntry;
+    //! f's entry of sagCache_ when it holds faceSag(f) for f's corners now, else null.
+    const SagEntry* rememberedSag(int f) const;
     //! cachedFaceSag(f) when remembered for f's corners, else faceSagBound(f): at least the sag.
     double knownFaceSag(int f) const;
     //! The largest sag an operation may leave on the faces around it, from `faces` before it.
@@ -720,34 +720,29 @@ double ValenceOptimizer::faceSag(int f) const
 
 double ValenceOptimizer::faceSagBound(int f) const
 {
-    std::array<int, 4> starts = {-1, -1, -1, -1};  // sagPoints' start faces
-    return faceSagBound(f, starts);
+    Vec3 points[4];
+    int starts[4];
+    sagPoints(f, points, starts);
+    double sag = 0;
+    for (int k = 0; k < 4; ++k) sag = std::max(sag, walk_->distanceBound(points[k], starts[k]));
+    return sag;
 }
 
-double ValenceOptimizer::faceSagBound(int f, std::array<int, 4>& starts) const
+const ValenceOptimizer::SagEntry* ValenceOptimizer::rememberedSag(int f) const
 {
-    Vec3 points[4];
-    int defaultStarts[4];
-    sagPoints(f, points, defaultStarts);
-    double sag = 0;
-    for (int k = 0; k < 4; ++k) {
-        if (starts[k] < 0) starts[k] = defaultStarts[k];
-        sag = std::max(sag, walk_->distanceBound(points[k], starts[k], &starts[k]));
-    }
-    return sag;
+    if (f >= static_cast<int>(sagCache_.size())) return nullptr;
+    const SagEntry& entry = sagCache_[f];
+    const Face& t = faces_[f];
+    return entry.sag >= 0 && entry.corners == std::array<Vec3, 3>{pos_[t[0]], pos_[t[1]], pos_[t[2]]} ? &entry : nullptr;
 }
 
 double ValenceOptimizer::cachedFaceSag(int f)
 {
+    if (const SagEntry* entry = rememberedSag(f)) return entry->sag;
     if (sagCache_.size() < faces_.size()) sagCache_.resize(faces_.size());
-    SagEntry& entry = sagCache_[f];
     const Face& t = faces_[f];
-    const std::array<Vec3, 3> corners = {pos_[t[0]], pos_[t[1]], pos_[t[2]]};
-    if (entry.sag < 0 || entry.corners != corners) {
-        entry.corners = corners;
-        entry.sag = faceSag(f);
-    }
-    return entry.sag;
+    sagCache_[f] = {{pos_[t[0]], pos_[t[1]], pos_[t[2]]}, faceSag(f)};
+    return sagCache_[f].sag;
 }
 
 bool ValenceOptimizer::sagExceeds(const std::vector<int>& faces, double limit)
@@ -1203,12 +1198,8 @@ double ValenceOptimizer::operationSagLimit(const std::vector<int>& faces)
 
 double ValenceOptimizer::knownFaceSag(int f) const
 {
-    if (f < static_cast<int>(sagCache_.size())) {
-        const SagEntry& entry = sagCache_[f];
-        const Face& t = faces_[f];
-        if (entry.sag >= 0 && entry.corners == std::array<Vec3, 3>{pos_[t[0]], pos_[t[1]], pos_[t[2]]}) return entry.sag;
-    }
-    return faceSagBound(f);
+    const SagEntry* entry = rememberedSag(f);
+    return entry ? entry->sag : faceSagBound(f);
 }
 
 bool ValenceOptimizer::tryApply(const Candidate& cand, std::vector<int>& changed)
@@ -1326,16 +1317,17 @@ void ValenceOptimizer::relax()
     };
     std::vector<double> startSag(pointCount);  // a bound, exact where `exact`
     std::vector<char> exact(pointCount, 0);
-    auto measureExactly = [&](auto&& needed) {
+    auto measureExactly = [&](int q) {
+        Vec3 x;
+        int start;
+        sagPoint(q, x, start);
+        startSag[q] = (surface_.tree.closest(x, start).point - x).norm();
+        exact[q] = 1;
+    };
+    auto measureExactlyWhere = [&](auto&& needed) {
 #pragma omp parallel for schedule(static)
-        for (int q = 0; q < pointCount; ++q) {
-            if (exact[q] || !needed(q)) continue;
-            Vec3 x;
-            int start;
-            sagPoint(q, x, start);
-            startSag[q] = (surface_.tree.closest(x, start).point - x).norm();
-            exact[q] = 1;
-        }
+        for (int q = 0; q < pointCount; ++q)
+            if (!exact[q] && needed(q)) measureExactly(q);
     };
 #pragma omp parallel for schedule(static)
     for (int q = 0; q < pointCount; ++q) {
@@ -1348,14 +1340,14 @@ void ValenceOptimizer::relax()
     double largestStartSag = 0;
     if (pointCount > 0) {
         const int top = static_cast<int>(std::max_element(startSag.begin(), startSag.end()) - startSag.begin());
-        measureExactly([&](int q) { return q == top; });
+        measureExactly(top);
         const double reached = startSag[top];
-        measureExactly([&](int q) { return startSag[q] > reached; });
+        measureExactlyWhere([&](int q) { return startSag[q] > reached; });
         for (int q = 0; q < pointCount; ++q)
             if (exact[q]) largestStartSag = std::max(largestStartSag, startSag[q]);
     }
     const double sagFloor = std::max(maxSag, kRelaxSagShareOfLargest * largestStartSag);
-    measureExactly([&](int q) { return kRelaxSagGrowth * startSag[q] > sagFloor; });
+    measureExactlyWhere([&](int q) { return kRelaxSagGrowth * startSag[q] > sagFloor; });
     // Per face, an upper bound of each sag point's distance to the surface (sagPoints' order:
     // the centroid, then the midpoints of edges 01, 12, 20) while its corners are sagCorners.
     std::vector<std::array<double, 4>> pointSag(faces_.size());
