@@ -1,5 +1,7 @@
 #include "arguments.h"
 
+#include "errors.h"
+
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -17,7 +19,7 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::s
             continue;
         }
         if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
-            if (arg.size() > 1 && arg[0] == '-') throw UsageError("unknown option '" + arg + "'");
+            if (arg.size() > 1 && arg[0] == '-') throw UsageError("unknown option " + quoteInput(arg));
             positional_.push_back(arg);
             continue;
         }
@@ -35,7 +37,7 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::s
                 values_[name] = args[++i];
             }
         } else {
-            throw UsageError("unknown option '--" + name + "'");
+            throw UsageError("unknown option " + quoteInput("--" + name));
         }
     }
 }
@@ -56,7 +58,7 @@ long long Arguments::integer(const std::string& name, long long fallback, long l
     errno = 0;
     const long long n = std::strtoll(s.c_str(), &end, 10);
     if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || *end != '\0' || errno == ERANGE)
-        throw UsageError("--" + name + " expects an integer, got '" + s + "'");
+        throw UsageError("--" + name + " expects an integer, got " + quoteInput(s));
     if (n < min || n > max)
         throw UsageError("--" + name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + s);
     return n;
@@ -72,11 +74,11 @@ std::uint64_t Arguments::unsignedInteger(const std::string& name, std::uint64_t 
     // strtoull accepts "-1" (as 2^64 - 1): only digits are a valid unsigned integer here.
     const std::uint64_t n = std::strtoull(s.c_str(), &end, 10);
     if (s.empty() || !std::isdigit(static_cast<unsigned char>(s[0])) || *end != '\0' || errno == ERANGE)
-        throw UsageError("--" + name + " expects a non-negative integer, got '" + s + "'");
+        throw UsageError("--" + name + " expects a non-negative integer, got " + quoteInput(s));
     return n;
 }
 
-double Arguments::number(const std::string& name, double fallback, double min) const
+double Arguments::number(const std::string& name, double fallback, double min, Bound bound) const
 {
     const auto value = text(name);
     if (!value) return fallback;
@@ -85,11 +87,11 @@ double Arguments::number(const std::string& name, double fallback, double min) c
     errno = 0;
     const double x = std::strtod(s.c_str(), &end);
     if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || *end != '\0' || errno == ERANGE || !std::isfinite(x))
-        throw UsageError("--" + name + " expects a finite number, got '" + s + "'");
-    if (x < min) {
-        char bound[32];
-        std::snprintf(bound, sizeof bound, "%g", min);
-        throw UsageError("--" + name + " must be >= " + bound + ", got " + s);
+        throw UsageError("--" + name + " expects a finite number, got " + quoteInput(s));
+    if (x < min || (bound == Bound::Exclusive && x == min)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", min);
+        throw UsageError("--" + name + (bound == Bound::Exclusive ? " must be > " : " must be >= ") + text + ", got " + s);
     }
     return x;
 }

@@ -30,8 +30,10 @@ public:
     //! The option's value as an integer in [min, max], or `fallback` when absent.
     long long integer(const std::string& name, long long fallback, long long min, long long max) const;
     std::uint64_t unsignedInteger(const std::string& name, std::uint64_t fallback) const;
-    //! A finite number >= min (NaN and infinities are refused).
-    double number(const std::string& name, double fallback, double min) const;
+    //! Whether the lower bound of number() is itself allowed.
+    enum class Bound { Inclusive, Exclusive };
+    //! A finite number >= min (> min with Bound::Exclusive; NaN and infinities are refused).
+    double number(const std::string& name, double fallback, double min, Bound bound = Bound::Inclusive) const;
 
 private:
     std::vector<std::string> positional_;

@@ -23,9 +23,9 @@ FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser
     try {
         source = fieldSourceFromName(*name);
     } catch (const InvalidInputError&) {
-        throw UsageError("--field must be " + valid + ", got '" + *name + "'");
+        throw UsageError("--field must be " + valid + ", got " + quoteInput(*name));
     }
-    if (source == FieldSource::User && !allowUser) throw UsageError("--field must be " + valid + ", got '" + *name + "'");
+    if (source == FieldSource::User && !allowUser) throw UsageError("--field must be " + valid + ", got " + quoteInput(*name));
     return source;
 }
 
@@ -44,6 +44,34 @@ void checkWritable(const std::string& path, const std::string& input)
     if (probe == nullptr) throw IOError(path + ": cannot write: " + std::strerror(errno));
     std::fclose(probe);
     if (!existed) fs::remove(path, ec);
+}
+
+namespace {
+
+//! Where writing `path` would put the bytes: symbolic links followed (dangling ones too, which
+//! the write would create), then made absolute and normal.
+std::filesystem::path writeTarget(std::filesystem::path path)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(path, ec)); ++hops) {
+        const fs::path target = fs::read_symlink(path, ec);
+        if (ec) break;
+        path = target.is_absolute() ? target : path.parent_path() / target;
+    }
+    const fs::path resolved = fs::weakly_canonical(path, ec);
+    return ec ? fs::absolute(path, ec).lexically_normal() : resolved;
+}
+
+}  // namespace
+
+void checkDistinctOutputs(const std::string& path, const std::string& other, const std::string& what)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const bool same = (fs::exists(path, ec) && fs::exists(other, ec) && fs::equivalent(path, other, ec)) ||
+                      writeTarget(path) == writeTarget(other);
+    if (same) throw IOError(path + ": is also the " + what + " " + other + "; choose another file (one would overwrite the other)");
 }
 
 void checkOutputPath(const std::string& path, const std::string& input)

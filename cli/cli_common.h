@@ -24,6 +24,12 @@ FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser
 //! it, and removes it again if that created it.
 void checkWritable(const std::string& path, const std::string& input);
 
+//! Throws IOError when `path` and `other` name the same file, whether or not it exists yet:
+//! through another spelling, `..`, a symbolic link (also a dangling one) or a hard link. Used
+//! for two files one command writes (the mesh and its report), where the second would
+//! silently replace the first.
+void checkDistinctOutputs(const std::string& path, const std::string& other, const std::string& what);
+
 //! checkWritable, and a mesh extension writeMesh handles.
 void checkOutputPath(const std::string& path, const std::string& input);
 

@@ -260,6 +260,7 @@ int runCompare(const std::vector<std::string>& args)
         notes.push_back("no meshlab-isotropic row: meshlabserver not found (--meshlabserver PATH or $FCVT_MESHLABSERVER)");
 
     if (!quiet) {
+        for (const std::string& warning : readInfo.warnings) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
         for (const std::string& note : readInfo.notes) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
         for (const Row& row : rows)
             for (const std::string& w : row.result.warnings)

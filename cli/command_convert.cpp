@@ -66,6 +66,8 @@ int runConvert(const std::vector<std::string>& args)
     if (attributes.rosy.size() != input.vertices.size()) attributes.rosy.clear();
     writeMesh(outPath, input, keepAttributes ? &attributes : nullptr);
 
+    // What makes the mesh differ from the file is said even with --quiet.
+    for (const std::string& warning : readInfo.warnings) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
     if (!quiet) {
         for (const std::string& note : readInfo.notes) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
         for (const std::string& note : check.notes)

@@ -69,6 +69,7 @@ int runField(const std::vector<std::string>& args)
     VertexAttributes inputAttributes;
     const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
     std::vector<std::string> warnings;
+    for (const std::string& warning : readInfo.warnings) warnings.push_back(inPath + ": " + warning);
     for (const std::string& note : readInfo.notes) warnings.push_back(inPath + ": " + note);
 
     InputReport cleaning;

@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "mesh_io.h"
+#include "metrics.h"
 #include "remesh.h"
 
 #include <algorithm>
@@ -83,34 +84,6 @@ void printUsage()
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
-// Mean length over the distinct (undirected) edges of the faces.
-double meanEdgeLength(const TriMesh& mesh)
-{
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(mesh.faces.size() * 3);
-    for (const Face& f : mesh.faces)
-        for (int k = 0; k < 3; ++k)
-            edges.emplace_back(std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]));
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    double sum = 0;
-    for (const auto& e : edges) sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).stableNorm();  // no overflow at 1e300
-    return edges.empty() ? 0.0 : sum / double(edges.size());
-}
-
-// Equilateral triangulation of edge L: about 2 faces per vertex, each of area sqrt(3) L^2 / 4.
-int vertexCountForLength(const TriMesh& input, double length)
-{
-    const double area = surfaceArea(input);
-    const double wanted = 2.0 * area / (std::sqrt(3.0) * length * length);
-    if (!std::isfinite(wanted) || wanted > kMaxVertexCount) {
-        char text[160];
-        std::snprintf(text, sizeof text, "--target-length %g on a surface of area %g gives %.3g vertices; ", length, area, wanted);
-        throw UsageError(text + std::string("the vertex count must be ") + vertexCountRange() + ": choose a longer edge");
-    }
-    return std::max(kMinVertexCount, static_cast<int>(std::lround(wanted)));
-}
-
 RemeshParams paramsFrom(const Arguments& a)
 {
     if (a.has("vertices") == a.has("target-length"))
@@ -184,9 +157,7 @@ int runRemesh(const std::vector<std::string>& args)
     const std::string& outPath = files[1];
     RemeshParams params = paramsFrom(a);
     // Checked before reading the input (a usage error); applied once the area is known.
-    const double targetLength = a.number("target-length", 0.0, 0.0);
-    if (a.has("target-length") && !(targetLength > 0))
-        throw UsageError("--target-length must be > 0, got " + *a.text("target-length"));
+    const double targetLength = a.number("target-length", 0.0, 0.0, Arguments::Bound::Exclusive);
     const bool quiet = a.flag("quiet");
     // The distances (dense sampling of both meshes: 0.05-0.26 s on the benchmark rows) are
     // only ever printed or reported; the quality figures and the topology check stay.
@@ -196,13 +167,25 @@ int runRemesh(const std::vector<std::string>& args)
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
                          inPath + " is not a .ply file");
     checkOutputPath(outPath, inPath);
-    if (const auto reportPath = a.text("report")) checkWritable(*reportPath, inPath);
+    if (const auto reportPath = a.text("report")) {
+        checkDistinctOutputs(*reportPath, outPath, "output mesh");
+        checkWritable(*reportPath, inPath);
+    }
 
     const auto start = std::chrono::steady_clock::now();
     MeshReadInfo readInfo;
     VertexAttributes inputAttributes;
     const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
-    if (targetLength > 0) params.vertexCount = vertexCountForLength(input, targetLength);
+    std::string sizeWarning;
+    if (targetLength > 0) {
+        try {
+            const VertexCountFromLength size = vertexCountForLength(surfaceArea(input), targetLength, "--target-length");
+            params.vertexCount = size.vertexCount;
+            sizeWarning = size.warning;
+        } catch (const InvalidInputError& e) {
+            throw UsageError(e.what());  // an argument that does not fit this input: a usage error, as before
+        }
+    }
     if (params.fieldSource == FieldSource::User) params.userDirections = userField(inPath, inputAttributes);
     const double readSeconds = secondsSince(start);
 
@@ -213,6 +196,8 @@ int runRemesh(const std::vector<std::string>& args)
             result = remesh(input, params, progress.callback());
         } catch (const InvalidInputError& e) {
             throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
+        } catch (const SolverError& e) {
+            throw SolverError(inPath + ": " + e.what());
         }
     }
 
@@ -228,9 +213,15 @@ int runRemesh(const std::vector<std::string>& args)
     writeMesh(outPath, result.mesh, writeField ? &outputAttributes : nullptr);
     const double writeSeconds = secondsSince(writeStart);
 
+    // Warnings say that the output differs from what was asked (topology, parts, faces, vertex
+    // count): they are printed even with --quiet. The reader's notes (polygons triangulated,
+    // properties ignored) are information: printed without --quiet, and in the report.
     std::vector<std::string> warnings;
-    for (const std::string& note : readInfo.notes) warnings.push_back(inPath + ": " + note);
+    for (const std::string& warning : readInfo.warnings) warnings.push_back(inPath + ": " + warning);
+    if (!sizeWarning.empty()) warnings.push_back(sizeWarning);
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+    std::vector<std::string> notes;
+    for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
     // The output's topology and mean edge length are only printed or reported.
     const bool described = !quiet || a.has("report");
     const TopologySummary outputTopology = described ? computeTopology(result.mesh) : TopologySummary{};
@@ -270,12 +261,14 @@ int runRemesh(const std::vector<std::string>& args)
                                                                                       {"samples", result.lattice.samples}}
                                                              : nlohmann::ordered_json{{"kind", "random"}}},
                                                {"energy_history", energyHistoryJson(result.energyHistory)},
-                                               {"warnings", warnings}};
+                                               {"warnings", warnings},
+                                               {"notes", notes}};
         writeJsonFile(*reportPath, report);
     }
 
+    for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", escapeControlCharacters(w).c_str());
     if (!quiet) {
-        for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", w.c_str());
+        for (const std::string& n : notes) std::fprintf(stderr, "fcvt: note: %s\n", escapeControlCharacters(n).c_str());
         const QualityMetrics& m = result.metrics;
         std::printf("%s: %d vertices, %d faces, genus %d, %d boundary loops%s; Q_avg %.3f, theta_min %.1f deg, "
                     "V6 %.1f %%, d_H %.3g %% of the diagonal, mean edge %.4g; %d evaluations, %.2f s\n",

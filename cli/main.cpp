@@ -2,6 +2,7 @@
 // line "fcvt: error: <message>" on stderr: exit code 2 for usage errors, 1 for the rest.
 #include "arguments.h"
 #include "commands.h"
+#include "errors.h"
 #include "wait_policy.h"
 
 #include <malloc.h>
@@ -40,7 +41,7 @@ void printError(std::string message)
 {
     for (char& c : message)
         if (c == '\n' || c == '\r') c = ' ';
-    std::fprintf(stderr, "fcvt: error: %s\n", message.c_str());
+    std::fprintf(stderr, "fcvt: error: %s\n", fieldcvt::escapeControlCharacters(message).c_str());
 }
 
 int run(const std::vector<std::string>& args)

@@ -1,8 +1,10 @@
 #pragma once
 // Exceptions thrown by the core. The CLI and the MeshLab plugin catch std::exception at their
 // boundary and turn it into one clear message.
+#include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace fieldcvt {
 
@@ -31,5 +33,15 @@ struct TimeLimitReached : Error {
 struct CancelledError : Error {
     CancelledError() : Error("cancelled") {}
 };
+
+//! Text taken from an input (a token, a header line, an argument) as a message may quote it:
+//! in single quotes, at most `maxChars` characters of it (then an ellipsis), control characters
+//! and other non-printing bytes shown as \xNN escapes so that a file cannot write terminal
+//! escape sequences or a megabyte line through an error message.
+std::string quoteInput(std::string_view text, std::size_t maxChars = 80);
+
+//! The message with every control character shown escaped (\xNN), for a front end that prints it
+//! on one line: file names and quoted inputs cannot move the cursor or colour the terminal.
+std::string escapeControlCharacters(std::string_view message);
 
 }  // namespace fieldcvt

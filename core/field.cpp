@@ -104,8 +104,7 @@ FieldSource fieldSourceFromName(const std::string& name)
     if (name == "curvature-max") return FieldSource::CurvatureMax;
     if (name == "curvature-min") return FieldSource::CurvatureMin;
     if (name == "user") return FieldSource::User;
-    throw InvalidInputError("unknown field source '" + name +
-                            "' (expected extrinsic, curvature-max, curvature-min or user)");
+    throw InvalidInputError("unknown field source " + quoteInput(name) + " (expected extrinsic, curvature-max, curvature-min or user)");
 }
 
 std::string fieldSourceName(FieldSource source)

@@ -15,6 +15,20 @@ namespace fieldcvt {
 
 namespace {
 
+//! True when the triangle's area is below rounding against its longest edge (a sine of about
+//! 1e-12): corners on one line that doubles could not place exactly on it. Scaled first, so
+//! neither 1e300 nor 1e-300 coordinates overflow or underflow.
+bool cornersOnOneLine(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    Vec3 u = b - a, v = c - a;
+    const double scale = std::max(u.cwiseAbs().maxCoeff(), v.cwiseAbs().maxCoeff());
+    if (!(scale > 0) || !std::isfinite(scale)) return false;  // the exact checks decide those
+    u /= scale;
+    v /= scale;
+    const double longest = std::max({u.squaredNorm(), v.squaredNorm(), (v - u).squaredNorm()});
+    return u.cross(v).norm() <= 1e-12 * longest;
+}
+
 std::string point(const Vec3& p)
 {
     std::ostringstream s;
@@ -75,6 +89,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     // its vertex splits give the faces of one fan the same copy).
     std::vector<Face> faces;
     std::vector<int> faceOrigin;  // clean face -> input face, for messages
+    bool allOnLines = true;
     faces.reserve(input.faces.size());
     faceOrigin.reserve(input.faces.size());
     for (int f = 0; f < input.faceCount(); ++f) {
@@ -87,9 +102,14 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
             ++report.removedDegenerateFaces;
             continue;
         }
+        allOnLines = allOnLines && cornersOnOneLine(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
         faces.push_back(t);
         faceOrigin.push_back(f);
     }
+    // Corners on one line up to rounding leave a tiny area that is not exactly zero: a surface
+    // made only of such faces has nothing to remesh either.
+    if (!faces.empty() && allOnLines)
+        throw InvalidInputError("every face of the mesh is degenerate (its corners lie on one line, up to rounding)");
     if (!repaired) {
         std::vector<std::pair<std::array<int, 3>, int>> keys;
         keys.reserve(faces.size());

@@ -485,4 +485,17 @@ DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, i
     return result;
 }
 
+double meanEdgeLength(const TriMesh& mesh)
+{
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(mesh.faces.size() * 3);
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) edges.emplace_back(std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    double sum = 0;
+    for (const auto& e : edges) sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).stableNorm();
+    return edges.empty() ? 0.0 : sum / double(edges.size());
+}
+
 }  // namespace fieldcvt

@@ -47,6 +47,10 @@ struct QualityMetrics {
 //! Q_min ... V6% of `mesh` (distances left NaN).
 QualityMetrics computeQuality(const TriMesh& mesh);
 
+//! Mean length over the distinct (undirected) edges of the faces; 0 without faces. Lengths by
+//! stableNorm: no overflow at coordinates of 1e300.
+double meanEdgeLength(const TriMesh& mesh);
+
 //! computeQuality(mesh).v6Pct without the rest (no angles).
 double v6Percent(const TriMesh& mesh);
 

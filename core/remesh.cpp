@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <limits>
 #include <memory>
@@ -148,7 +149,80 @@ private:
 
 }  // namespace
 
+namespace {
+
+//! Far from the origin the coordinates are coarse (doubles at 1e15 are 0.125 apart): the output,
+//! computed in the working frame, may collapse when taken back. Says so in a warning (the
+//! offset, the resolution, the edge length, what collapsed) and measures the quality figures
+//! on the mesh as returned, so the summary and the report describe the file written.
+void checkOutputPrecision(RemeshResult& result, bool inFloat)
+{
+    TriMesh& mesh = result.mesh;
+    if (mesh.faces.empty()) return;
+    double offset = 0;
+    for (const Vec3& p : mesh.vertices) offset = std::max(offset, p.cwiseAbs().maxCoeff());
+    // The spacing of representable coordinates at the largest one.
+    const double resolution = inFloat ? double(std::nextafter(float(offset), HUGE_VALF) - float(offset))
+                                      : std::nextafter(offset, HUGE_VAL) - offset;
+    // An edge of 256 grid steps still gives angles within about half a degree. Every face has
+    // an edge of at least its share of the area's square root: most meshes stop here, unsorted.
+    const double area = surfaceArea(mesh);
+    if (!(resolution > 0) || std::sqrt(area / double(mesh.faceCount())) > 1024 * resolution) return;
+    const double meanEdge = meanEdgeLength(mesh);
+    if (!(meanEdge < 256 * resolution)) return;
+    std::vector<Vec3> sorted = mesh.vertices;
+    std::sort(sorted.begin(), sorted.end(), [](const Vec3& a, const Vec3& b) { return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3); });
+    int coincident = 0;
+    for (size_t i = 1; i < sorted.size(); ++i) coincident += sorted[i] == sorted[i - 1];
+    int zeroArea = 0;
+    for (const Face& f : mesh.faces) {
+        int exponent = 0;
+        zeroArea += (scaledCross(mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]], exponent).array() == 0.0).all();
+    }
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "the coordinates are too coarse for this edge length: %s %.3g from the origin are %.3g apart, against a "
+                  "mean edge of %.3g; the output has %d zero-area faces and %d coincident vertices (move the model "
+                  "nearer the origin, or use a longer edge)",
+                  inFloat ? "floats" : "doubles", offset, resolution, meanEdge, zeroArea, coincident);
+    result.warnings.push_back(text);
+    // The figures of the mesh as returned: measured about its own centre (a subtraction of
+    // nearby values, exact), where the collapsed faces show as they are.
+    TriMesh centred = mesh;
+    const Vec3 centre = mesh.vertices[mesh.faces[0][0]];
+    for (Vec3& p : centred.vertices) p -= centre;
+    const QualityMetrics quality = computeQuality(centred);
+    const double dRms = result.metrics.dRms, dH = result.metrics.dH, dBoundary = result.metrics.dBoundary;
+    result.metrics = quality;
+    result.metrics.dRms = dRms;
+    result.metrics.dH = dH;
+    result.metrics.dBoundary = dBoundary;
+}
+
+}  // namespace
+
 std::string vertexCountRange() { return "between " + std::to_string(kMinVertexCount) + " and " + std::to_string(kMaxVertexCount); }
+
+VertexCountFromLength vertexCountForLength(double area, double length, const std::string& parameter)
+{
+    char text[200];
+    if (!(length > 0) || !std::isfinite(length)) {
+        std::snprintf(text, sizeof text, "%s must be > 0, got %g", parameter.c_str(), length);
+        throw InvalidInputError(text);
+    }
+    const double wanted = 2.0 * area / (std::sqrt(3.0) * length * length);
+    std::snprintf(text, sizeof text, "%s %g on a surface of area %g gives %.3g vertices", parameter.c_str(), length, area, wanted);
+    if (!std::isfinite(wanted) || wanted > kMaxVertexCount)
+        throw InvalidInputError(text + std::string("; the vertex count must be ") + vertexCountRange() + ": choose a longer edge");
+    VertexCountFromLength out;
+    out.vertexCount = static_cast<int>(std::lround(wanted));
+    if (out.vertexCount < kMinVertexCount) {
+        out.vertexCount = kMinVertexCount;
+        out.warning = text + std::string(", fewer than the minimum: remeshed to ") + std::to_string(kMinVertexCount) +
+                      " vertices (choose a shorter edge for more)";
+    }
+    return out;
+}
 
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
 {
@@ -405,8 +479,8 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         result.warnings.insert(result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         result.mesh = std::move(rdt.mesh);
         if (result.mesh.faces.empty())
-            throw SolverError("no restricted Delaunay triangle survives with " + std::to_string(sampleCount) +
-                              " samples on this surface: use more vertices");
+            throw SolverError(std::to_string(sampleCount) + " vertices are too few for this surface: they form no " +
+                              "triangle on it (it is thinner than the edge length everywhere); use more vertices");
         for (int seed : rdt.seedOfVertex)
             roles.push_back(size_t(seed) < sampleRoles.size() ? roleOf(sampleRoles[size_t(seed)]) : VertexRole::Free);
         vertexFaceHints = std::move(rdt.faceOfVertex);
@@ -464,6 +538,9 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
                                       " components (use more vertices)");
     });
     for (Vec3& p : result.mesh.vertices) p = frame.fromWork(p);
+    if (params.outputInFloat)
+        for (Vec3& p : result.mesh.vertices) p = p.cast<float>().cast<double>();
+    checkOutputPrecision(result, params.outputInFloat);
     pipeline.report("done", 100);
     result.totalSeconds = secondsSince(start);
     return result;

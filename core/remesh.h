@@ -32,6 +32,17 @@ constexpr int kMaxVertexCount = 5000000;
 //! "between 4 and 5000000", the one wording of that limit in every message.
 std::string vertexCountRange();
 
+//! A target edge length turned into a vertex count, for the front ends' size-by-length option.
+struct VertexCountFromLength {
+    int vertexCount = kMinVertexCount;
+    std::string warning;  //!< non-empty when the length asked for fewer than kMinVertexCount vertices
+};
+//! An equilateral triangulation with edge `length` has about 2 faces per vertex, each of area
+//! sqrt(3) length^2 / 4: 2 area / (sqrt(3) length^2) vertices. Throws InvalidInputError naming
+//! `parameter` (as its front end calls it) when the length is not > 0 or gives more than
+//! kMaxVertexCount; fewer than kMinVertexCount give that minimum and a warning that says so.
+VertexCountFromLength vertexCountForLength(double area, double length, const std::string& parameter);
+
 struct RemeshParams {
     int vertexCount = 5000;  //!< target number of output vertices (samples), kMinVertexCount..kMaxVertexCount
     //! Weight of E_field (eq. 2) on the normalised surface (mean cell area 1, §5); 0 = pure CVT.
@@ -84,6 +95,12 @@ struct RemeshParams {
     //! runs out, the output is made from the best samples so far and a warning says so.
     double timeLimitSeconds = 0;
     bool computeDistances = true;  //!< also compute d_RMS / d_H against the input in the report
+    //! The caller stores the output's coordinates as float (MeshLab's single-precision CMeshO):
+    //! the output is rounded to float here, and its precision check (below) is of that mesh.
+    //! Either way, when the coordinates' resolution far from the origin cannot hold the edge
+    //! length (faces of zero area, coincident vertices), a warning says so and the quality
+    //! figures are those of the mesh returned.
+    bool outputInFloat = false;
     //! Also find the field's singularities (RemeshResult::singularities, for the report and the
     //! log; bunny 5000: 0.01 s, nefertiti 10000: 0.02 s).
     bool computeSingularities = true;

@@ -90,22 +90,6 @@ int densityChoice(const ParamValues& par)
     return par.getEnum(kAdaptive);
 }
 
-// Mean length over the distinct (undirected) edges of the faces.
-double meanEdgeLength(const fieldcvt::TriMesh& mesh)
-{
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(mesh.faces.size() * 3);
-    for (const fieldcvt::Face& f : mesh.faces)
-        for (int k = 0; k < 3; ++k)
-            edges.emplace_back(std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]));
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    double sum = 0;
-    for (const auto& e : edges)
-        sum += (mesh.vertices[size_t(e.first)] - mesh.vertices[size_t(e.second)]).norm();
-    return edges.empty() ? 0.0 : sum / double(edges.size());
-}
-
 // The fieldSource enum: index in the RichEnum (the value stored in .mlx scripts, frozen) ->
 // core source. "Compute 6-RoSy Field" offers the first kComputedFieldSources entries.
 struct FieldSourceChoice {
@@ -485,7 +469,10 @@ void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, Filt
 
 QString unexpectedFailure(const std::exception* e)
 {
-    return e != nullptr ? QString("FCVT: %1").arg(QString::fromUtf8(e->what())) : QString("FCVT: unknown error");
+    // Escaped: an exception's text may quote the input (a name, a token) and must not reach the
+    // log as raw control characters.
+    return e != nullptr ? QString("FCVT: %1").arg(QString::fromStdString(fieldcvt::escapeControlCharacters(e->what())))
+                        : QString("FCVT: unknown error");
 }
 
 namespace {
@@ -619,26 +606,20 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
         MeshModel* input = currentTriangleLayer(md);
         if (input == nullptr)
             return false;
-        if (!(targetLength > 0) || !std::isfinite(targetLength))
-            return fail(QString("FCVT: %1 must be a number above 0 (got %2)").arg(parameterName(kTargetLength)).arg(targetLength));
         // In double and scale-robust (a float cross product overflows from coordinates ~1e10).
         const double area = fieldcvt::surfaceArea(fcvt_plugin::toTriMesh(input->cm));
-        // Equilateral triangulation of edge L: about 2 faces per vertex of area sqrt(3) L^2 / 4.
-        const double wanted = 2.0 * area / (std::sqrt(3.0) * targetLength * targetLength);
-        if (!std::isfinite(wanted) || wanted > fieldcvt::kMaxVertexCount)
-            return fail(QString("FCVT: %1 %2 on a surface of area %3 gives %4 vertices; "
-                                "the vertex count must be %5: choose a longer edge")
-                            .arg(parameterName(kTargetLength))
-                            .arg(targetLength)
-                            .arg(area)
-                            .arg(wanted, 0, 'g', 3)
-                            .arg(QString::fromStdString(fieldcvt::vertexCountRange())));
-        const int fromLength = std::max(fieldcvt::kMinVertexCount, int(std::lround(wanted)));
+        fieldcvt::VertexCountFromLength size;
+        try {
+            size = fieldcvt::vertexCountForLength(area, targetLength, parameterName(kTargetLength).toStdString());
+        } catch (const fieldcvt::InvalidInputError& e) {
+            return fail(QString("FCVT: %1").arg(QString::fromStdString(e.what())));
+        }
+        if (!size.warning.empty()) logWarning(QString("FCVT warning: %1").arg(QString::fromStdString(size.warning)));
         logInfo(QString("FCVT size: target edge length %1 on area %2 gives %3 vertices")
                 .arg(targetLength)
                 .arg(area)
-                .arg(fromLength));
-        vertexCount = fromLength;
+                .arg(size.vertexCount));
+        vertexCount = size.vertexCount;
     }
     if (vertexCount < fieldcvt::kMinVertexCount || vertexCount > fieldcvt::kMaxVertexCount)
         return fail(QString("FCVT: %1 must be %2 (got %3)")
@@ -752,6 +733,7 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
 
     fieldcvt::TriMesh in = surfaceOf(*input);
     fieldcvt::RemeshParams run = params;
+    run.outputInFloat = sizeof(Scalarm) == sizeof(float);  // the new layer's coordinates
     if (run.fieldSource == fieldcvt::FieldSource::User) {
         // One vector per live vertex, in the order of toTriMesh.
         // Not const: vcg's handle has no const operator[].

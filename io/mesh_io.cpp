@@ -77,7 +77,19 @@ Format formatOf(const std::string& path)
     if (ext == ".obj") return Format::Obj;
     if (ext == ".off") return Format::Off;
     if (ext == ".stl") return Format::Stl;
-    io_detail::fail(path, "unknown mesh file extension '" + ext + "' (use .ply, .obj, .off or .stl)");
+    io_detail::fail(path, "unknown mesh file extension " + quoteInput(ext) + " (use .ply, .obj, .off or .stl)");
+}
+
+std::string describeFileType(std::filesystem::file_type type)
+{
+    using std::filesystem::file_type;
+    switch (type) {
+    case file_type::fifo: return "a FIFO (named pipe)";
+    case file_type::socket: return "a socket";
+    case file_type::character: return "a character device";
+    case file_type::block: return "a block device";
+    default: return "a special file";
+    }
 }
 
 //! Missing, directory, unreadable and empty files get their own message before any parser runs.
@@ -88,6 +100,9 @@ void checkReadable(const std::string& path)
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) io_detail::fail(path, "no such file");
     if (fs::is_directory(status)) io_detail::fail(path, "is a directory, not a mesh file");
+    // Opening a FIFO blocks until something writes to it, and a device or socket never ends:
+    // only a regular file (also through links) is a mesh file.
+    if (!fs::is_regular_file(status)) io_detail::fail(path, "is " + describeFileType(status.type()) + ", not a regular mesh file");
     if (!std::ifstream(path, std::ios::binary)) io_detail::fail(path, std::string("cannot open: ") + std::strerror(errno));
     if (fs::file_size(path, ec) == 0) io_detail::fail(path, "file is empty");
 }

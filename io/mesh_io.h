@@ -11,7 +11,8 @@ namespace fieldcvt {
 //! What the reader noticed and did (reported by the CLI, never silent).
 struct MeshReadInfo {
     int polygonsTriangulated = 0;  //!< faces with more than 3 corners split into triangles
-    std::vector<std::string> notes;
+    std::vector<std::string> notes;     //!< information: the mesh is what the file says
+    std::vector<std::string> warnings;  //!< the mesh read differs from what the file says
 };
 
 //! Optional per-vertex data next to the geometry (PLY writes all, others what they can; only

@@ -1,5 +1,6 @@
 // A tolerant Wavefront OBJ reader of our own: MeshLab 2020.09's vcglib importer aborts on files
 // with `f a//n` corners, normals and CRLF line ends, which are common in the wild.
+#include "errors.h"
 #include "io_detail.h"
 #include "text_scan.h"
 
@@ -16,7 +17,7 @@ int cornerVertex(const TextScanner& scan, std::string_view corner, int vertexCou
     const long long raw = scan.integer(corner.substr(0, corner.find('/')));
     const long long index = raw < 0 ? vertexCount + raw : raw - 1;
     if (raw == 0 || index < 0 || index >= vertexCount)
-        scan.fail("face corner '" + std::string(corner) + "' refers to a vertex that does not exist (" +
+        scan.fail("face corner " + quoteInput(corner) + " refers to a vertex that does not exist (" +
                   std::to_string(vertexCount) + " vertices so far)");
     return static_cast<int>(index);
 }

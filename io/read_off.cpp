@@ -1,6 +1,7 @@
 // OFF reader of our own. vcglib 2020.09's ImporterOFF dereferences face indices without a range
 // check and reads the first token of an empty line at a truncated end (undefined behaviour, a
 // crash at best), so it cannot be given untrusted files.
+#include "errors.h"
 #include "io_detail.h"
 #include "text_scan.h"
 
@@ -31,8 +32,8 @@ TriMesh readOff(const std::string& path, const std::string& text, MeshReadInfo& 
     if (!scan.nextLine()) fail(path, "empty OFF file");
     const std::string keyword(scan.tokens()[0]);
     if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
-        scan.fail("not an OFF file (the first word must be OFF, found '" + keyword + "')");
-    if (keyword.find_first_of("4n") != std::string::npos) scan.fail("'" + keyword + "' (not 3D) is not supported");
+        scan.fail("not an OFF file (the first word must be OFF, found " + quoteInput(keyword) + ")");
+    if (keyword.find_first_of("4n") != std::string::npos) scan.fail(quoteInput(keyword) + " (not 3D) is not supported");
     if (scan.tokens().size() > 1 && scan.tokens()[1] == "BINARY") scan.fail("binary OFF is not supported");
     // Some writers put the counts on the keyword's line.
     const bool countsOnHeader = scan.tokens().size() > 1;

@@ -2,6 +2,7 @@
 // safe on untrusted files: it skips unread binary lists through a 512-byte stack buffer whatever
 // their length, reads int-counted index lists into a fixed 512-entry array, and calls atoi on a
 // missing element count; and ImporterPLY leaves some polygon indices unchecked.
+#include "errors.h"
 #include "io_detail.h"
 #include "text_scan.h"
 
@@ -115,7 +116,7 @@ private:
         if (start == pos_) fail(path_, "truncated PLY file (unexpected end of data)");
         const std::string_view token(bytes_.data() + start, pos_ - start);
         double value = 0;
-        if (!parseNumber(token, value)) fail(path_, "malformed number '" + std::string(token) + "' in the PLY data");
+        if (!parseNumber(token, value)) fail(path_, (isOutOfRange(token) ? "number out of range (not a finite double) " : "malformed number ") + quoteInput(token) + " in the PLY data");
         return value;
     }
 
@@ -145,7 +146,7 @@ std::size_t parseHeader(const std::string& path, const std::string& bytes, Encod
             ended = true;
             continue;
         }
-        auto bad = [&] { fail(path, "malformed PLY header line '" + line.substr(0, line.find_last_not_of("\r") + 1) + "'"); };
+        auto bad = [&] { fail(path, "malformed PLY header line " + quoteInput(std::string_view(line).substr(0, line.find_last_not_of("\r") + 1))); };
         if (keyword == "format") {
             std::string format;
             words >> format;
@@ -252,7 +253,7 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                     continue;
                 }
                 const double items = in.value(p.countSize, false, p.countSigned);
-                if (!(items >= 0) || items > capacity) fail(path, "invalid list length in PLY element " + e.name);
+                if (!(items >= 0) || items > capacity) fail(path, "invalid list length in PLY element " + quoteInput(e.name));
                 polygon.clear();
                 for (long long j = 0; j < static_cast<long long>(items); ++j) {
                     const double v = in.value(p.size, p.isFloat, p.isSigned);
@@ -277,7 +278,7 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
     if (const std::string rest = in.leftover(); !rest.empty()) {
         std::string declared;
         for (const Element& e : elements) declared += (declared.empty() ? "" : ", ") + std::to_string(e.count) + " " + e.name;
-        info.notes.push_back("PLY data goes on after the elements its header declares (" + declared + "): " + rest + " ignored");
+        info.warnings.push_back("PLY data goes on after the elements its header declares (" + declared + "): " + rest + " ignored");
     }
     return mesh;
 }

@@ -2,6 +2,7 @@
 // is then welded. vcglib 2020.09's ASCII importer drops the last facet when the file ends right
 // after its "endfacet" (no newline, no "endsolid"), reads coordinates as float and loops forever
 // on a file without a line end; its binary one over-reads the label.
+#include "errors.h"
 #include "io_detail.h"
 #include "text_scan.h"
 #include "vcg_mesh.h"
@@ -91,7 +92,7 @@ void readAsciiStl(const std::string& path, const std::string& text, VcgMesh& m, 
     };
     auto keyword = [&](const char* expected) {
         const std::string_view t = token(expected);
-        if (t != expected) scan.fail("expected '" + std::string(expected) + "', found '" + std::string(t) + "'");
+        if (t != expected) scan.fail("expected '" + std::string(expected) + "', found " + quoteInput(t));
     };
     for (;;) {
         if (next == scan.tokens().size()) {
@@ -104,7 +105,7 @@ void readAsciiStl(const std::string& path, const std::string& text, VcgMesh& m, 
             next = scan.tokens().size();
             continue;
         }
-        if (t != "facet") scan.fail("expected 'facet' or 'endsolid', found '" + std::string(t) + "'");
+        if (t != "facet") scan.fail("expected 'facet' or 'endsolid', found " + quoteInput(t));
         if (!inSolid) scan.fail("'facet' outside a solid");
         keyword("normal");
         for (int k = 0; k < 3; ++k) token("the facet normal");  // recomputed anyway
@@ -125,7 +126,7 @@ void readAsciiStl(const std::string& path, const std::string& text, VcgMesh& m, 
         }
     }
     if (inSolid)
-        info.notes.push_back("ASCII STL ends without 'endsolid' (truncated?); its " + std::to_string(m.face.size()) +
+        info.warnings.push_back("ASCII STL ends without 'endsolid' (truncated?); its " + std::to_string(m.face.size()) +
                              " complete facets were read");
 }
 

@@ -1,8 +1,13 @@
 #include "text_scan.h"
 
+#include "errors.h"
 #include "io_detail.h"
 
 #include <charconv>
+#include <clocale>
+#include <cmath>
+#include <cstdlib>
+#include <locale.h>
 
 namespace fieldcvt::io_detail {
 
@@ -18,11 +23,30 @@ std::string_view dropPlus(std::string_view token)
 
 }  // namespace
 
+bool isOutOfRange(std::string_view token)
+{
+    const std::string_view t = dropPlus(token);
+    double value = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    return ec == std::errc::result_out_of_range && end == t.data() + t.size();
+}
+
 bool parseNumber(std::string_view token, double& value)
 {
     const std::string_view t = dropPlus(token);
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-    return ec == std::errc() && end == t.data() + t.size();
+    if (end != t.data() + t.size()) return false;
+    if (ec == std::errc()) return true;
+    if (ec != std::errc::result_out_of_range) return false;
+    // Well formed but out of double's range: an underflow (1e-400) is read as strtod reads it,
+    // 0 or a subnormal of the right sign; an overflow (1e400) is not a finite coordinate.
+    static const locale_t cLocale = newlocale(LC_ALL_MASK, "C", static_cast<locale_t>(0));
+    const std::string copy(t);
+    char* parsedEnd = nullptr;
+    const double parsed = strtod_l(copy.c_str(), &parsedEnd, cLocale);
+    if (parsedEnd != copy.c_str() + copy.size() || !std::isfinite(parsed)) return false;
+    value = parsed;
+    return true;
 }
 
 std::size_t byteOrderMarkLength(std::string_view text) { return text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; }
@@ -55,7 +79,8 @@ bool TextScanner::nextLine()
 double TextScanner::number(std::string_view token) const
 {
     double value = 0;
-    if (!parseNumber(token, value)) fail("malformed number '" + std::string(token) + "'");
+    if (!parseNumber(token, value))
+        fail((isOutOfRange(token) ? "number out of range (not a finite double) " : "malformed number ") + quoteInput(token));
     return value;
 }
 
@@ -65,7 +90,7 @@ long long TextScanner::integer(std::string_view token) const
     long long value = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
     if (ec != std::errc() || end != t.data() + t.size())
-        fail("malformed integer '" + std::string(token) + "'");
+        fail("malformed integer " + quoteInput(token));
     return value;
 }
 

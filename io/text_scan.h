@@ -8,7 +8,12 @@
 namespace fieldcvt::io_detail {
 
 //! Strict, locale-independent: true if the whole token is one number (a leading '+' allowed).
+//! A decimal that underflows (1e-400) reads as strtod reads it (0 or a subnormal); one that
+//! overflows (1e400) is refused.
 bool parseNumber(std::string_view token, double& value);
+
+//! True if the whole token is a well-formed number outside double's range (underflow or overflow).
+bool isOutOfRange(std::string_view token);
 
 //! 3 if `text` starts with a UTF-8 byte order mark (which some Windows editors write), else 0.
 std::size_t byteOrderMarkLength(std::string_view text);

@@ -36,6 +36,9 @@ add_test(NAME meshlab_field_scaled
 add_test(NAME meshlab_missing_rosy
   COMMAND bash "${_fcvt_ml_dir}/missing_rosy.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/missing_rosy")
+add_test(NAME meshlab_far_coordinates
+  COMMAND bash "${_fcvt_ml_dir}/far_coordinates.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/far_coordinates")
 add_test(NAME meshlab_field_then_remesh
   COMMAND bash "${_fcvt_ml_dir}/field_then_remesh.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/field_then_remesh")
@@ -59,7 +62,8 @@ if(TARGET fcvt)
   set_tests_properties(meshlab_log_density PROPERTIES LABELS meshlab TIMEOUT 900)
 endif()
 set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_parameter
-  meshlab_field_torus meshlab_field_scaled meshlab_missing_rosy meshlab_field_then_remesh meshlab_colour_transfer
+  meshlab_field_torus meshlab_field_scaled meshlab_missing_rosy meshlab_far_coordinates meshlab_field_then_remesh
+  meshlab_colour_transfer
   meshlab_quality_report meshlab_compare_isotropic meshlab_invalid_new_parameters
   PROPERTIES LABELS meshlab TIMEOUT 600)
 # The GUI under Xvfb with the staged plugin and a screenshot (skipped, status 77, when the

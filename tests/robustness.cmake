@@ -39,3 +39,10 @@ if(TARGET filter_fcvt)
     set_tests_properties(robustness_meshlab_corpus PROPERTIES LABELS "robustness;meshlab" TIMEOUT 400)
   endif()
 endif()
+
+# Issue 30: special files, the report over the output, bounded and escaped messages, underflowing
+# numbers, coordinates too coarse for the edge length, the target length's limits, warnings
+# under --quiet, messages in the input's terms.
+add_test(NAME robustness_reliability3
+  COMMAND Python3::Interpreter "${_fcvt_rob_dir}/check_reliability3.py" $<TARGET_FILE:fcvt> "${_fcvt_rob_work}/reliability3")
+set_tests_properties(robustness_reliability3 PROPERTIES LABELS robustness TIMEOUT 300)

@@ -13,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
+
 namespace fieldcvt {
 namespace {
 
@@ -311,9 +313,9 @@ TEST_F(IoTest, PlyDataAfterTheDeclaredFacesIsReported)
         ply += binary ? std::string("\x03\0\0\0\0\x01\0\0\0\x02\0\0\0", 13) : "3 0 1 3\n\n3 1 2 3\n";
         MeshReadInfo info;
         expectSquare(readMesh(write("x.ply", ply), &info));
-        ASSERT_EQ(info.notes.size(), 1u);
-        EXPECT_NE(info.notes[0].find(binary ? "13 bytes ignored" : "2 lines ignored"), std::string::npos) << info.notes[0];
-        EXPECT_NE(info.notes[0].find("4 vertex, 2 face"), std::string::npos) << info.notes[0];
+        ASSERT_EQ(info.warnings.size(), 1u);  // data ignored: the mesh differs from the file
+        EXPECT_NE(info.warnings[0].find(binary ? "13 bytes ignored" : "2 lines ignored"), std::string::npos) << info.warnings[0];
+        EXPECT_NE(info.warnings[0].find("4 vertex, 2 face"), std::string::npos) << info.warnings[0];
     }
 }
 
@@ -339,8 +341,10 @@ TEST_F(IoTest, AsciiStlEndingRightAfterItsLastFacetKeepsIt)
     stl.erase(stl.find_last_not_of("\n") + 1);  // "... endfacet" and nothing after it
     MeshReadInfo info;
     expectSquare(readMesh(write("n.stl", stl), &info));
-    ASSERT_EQ(info.notes.size(), 2u);
-    EXPECT_NE(info.notes[0].find("without 'endsolid'"), std::string::npos) << info.notes[0];
+    ASSERT_EQ(info.warnings.size(), 1u);  // truncated?
+    EXPECT_NE(info.warnings[0].find("without 'endsolid'"), std::string::npos) << info.warnings[0];
+    ASSERT_EQ(info.notes.size(), 1u);  // the STL's shared corners merged
+    EXPECT_NE(info.notes[0].find("duplicate STL vertices"), std::string::npos) << info.notes[0];
     // Two solids in one file, and a facet cut short: every facet whole, or an error.
     const std::string second = std::string(asciiSquareStl).replace(0, 12, "solid again");
     EXPECT_EQ(readMesh(write("two.stl", std::string(asciiSquareStl) + second)).faceCount(), 4);
@@ -446,6 +450,50 @@ TEST_F(IoTest, BundledMeshes)
         EXPECT_EQ(m.faceCount(), b.faces);
         EXPECT_EQ(info.polygonsTriangulated, 0);
     }
+}
+
+TEST_F(IoTest, UnderflowingDecimalsAreReadAndOverflowingOnesRefused)
+{
+    // strtod's reading: 1e-400 is 0, 2.5e-320 a subnormal (issue 30: was "malformed number").
+    const std::string tet = "v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const TriMesh zero = readMesh(write("under.obj", "v 1e-400 -1e-400 2.5e-320\n" + tet));
+    EXPECT_EQ(zero.vertices[0].x(), 0.0);
+    EXPECT_EQ(zero.vertices[0].y(), 0.0);
+    EXPECT_TRUE(std::signbit(zero.vertices[0].y()));
+    EXPECT_GT(zero.vertices[0].z(), 0.0);
+    EXPECT_LT(zero.vertices[0].z(), 1e-300);
+    for (const char* huge : {"1e400", "-1e400"}) {
+        try {
+            readMesh(write("over.obj", std::string("v ") + huge + " 0 0\n" + tet));
+            ADD_FAILURE() << huge << " was read";
+        } catch (const IOError& e) {
+            EXPECT_NE(std::string(e.what()).find("out of range"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW(readMesh(write("bad.obj", "v 1e-4x00 0 0\n" + tet)), IOError);
+}
+
+TEST_F(IoTest, SpecialFilesAreRefusedWithoutOpeningThem)
+{
+    const std::string fifo = path("pipe.off");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    try {
+        readMesh(fifo);  // opening it would wait for a writer forever
+        ADD_FAILURE() << "a FIFO was read";
+    } catch (const IOError& e) {
+        EXPECT_NE(std::string(e.what()).find("FIFO"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Messages, QuotedInputIsBoundedAndEscaped)
+{
+    EXPECT_EQ(quoteInput("abc"), "'abc'");
+    EXPECT_EQ(quoteInput(std::string(1000000, 'x')), "'" + std::string(80, 'x') + "'...");
+    EXPECT_EQ(quoteInput(std::string(80, 'y')), "'" + std::string(80, 'y') + "'");
+    EXPECT_EQ(quoteInput("\x1b[31mred\n"), "'\\x1B[31mred\\x0A'");
+    // A UTF-8 character counts once and is never cut.
+    EXPECT_EQ(quoteInput("\xC3\xA9\xC3\xA9\xC3\xA9", 2), "'\xC3\xA9\xC3\xA9'...");
+    EXPECT_EQ(escapeControlCharacters("a\tb\x7f"), "a\\x09b\\x7F");
 }
 
 }  // namespace

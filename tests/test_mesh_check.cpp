@@ -21,6 +21,19 @@ TEST(MeshCheck, RejectsEmptyMeshAndPointCloud)
     EXPECT_NE(testmesh::inputError(cloud).find("point cloud"), std::string::npos);
 }
 
+TEST(MeshCheck, RejectsFacesWhoseCornersLieOnOneLineUpToRounding)
+{
+    // Points of one line that doubles cannot place exactly on it: areas of ~1e-17, not 0.
+    TriMesh line;
+    for (double t : {0.3, 1.1, 2.9, 4.7, 6.1}) line.vertices.push_back(Vec3(0.1, 0.7, 0.3) * t);
+    line.faces = {{0, 1, 2}, {1, 2, 3}, {2, 3, 4}};
+    EXPECT_NE(testmesh::inputError(line).find("on one line"), std::string::npos) << testmesh::inputError(line);
+    // One real face among them is a surface (its needles are kept for the RVD).
+    line.vertices.push_back({0, 0, 1});
+    line.faces.push_back({0, 4, 5});
+    EXPECT_EQ(testmesh::inputError(line), "");
+}
+
 TEST(MeshCheck, RejectsNonFiniteCoordinatesAndBadIndices)
 {
     TriMesh m = testmesh::planeGrid(2);

@@ -3,8 +3,10 @@
 #include "errors.h"
 #include "mesh_io.h"
 #include "remesh.h"
+#include "metrics.h"
 #include "sampling.h"
 
+#include <algorithm>
 #include <cmath>
 #include "test_meshes.h"
 
@@ -284,4 +286,47 @@ TEST(Remesh, LineSearchStuckAtAFieldJumpEndsTheFcvtStage)
     EXPECT_LT(r.evaluations, budget * 13 / 10) << "evaluations";
     EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
     EXPECT_GT(r.metrics.qAvg, 0.9);  // before the valence optimisation (measured 0.914)
+}
+
+TEST(Remesh, VertexCountForLengthIsOneFormulaWithBothLimitsSaid)
+{
+    // 2 area / (sqrt(3) L^2): a unit-area surface at L = 0.1 has 115.47 -> 115 vertices.
+    const VertexCountFromLength size = vertexCountForLength(1.0, 0.1, "--target-length");
+    EXPECT_EQ(size.vertexCount, 115);
+    EXPECT_TRUE(size.warning.empty());
+    // Too long an edge: the minimum, said (issue 30: was silent).
+    const VertexCountFromLength few = vertexCountForLength(1.0, 1e30, "targetLength");
+    EXPECT_EQ(few.vertexCount, kMinVertexCount);
+    EXPECT_NE(few.warning.find("targetLength 1e+30"), std::string::npos) << few.warning;
+    EXPECT_NE(few.warning.find("fewer than the minimum"), std::string::npos) << few.warning;
+    // Too short an edge, and no edge: errors naming the parameter as its front end calls it.
+    for (double bad : {1e-30, 0.0, -1.0, std::nan("")}) {
+        try {
+            vertexCountForLength(1.0, bad, "--target-length");
+            ADD_FAILURE() << bad << " accepted";
+        } catch (const InvalidInputError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("--target-length ", 0), 0u) << e.what();
+        }
+    }
+}
+
+TEST(Remesh, CoordinatesTooCoarseForTheEdgeLengthAreSaidAndMeasuredAsReturned)
+{
+    // A sphere of radius 10 at 1e15, where doubles are 0.125 apart: an edge of 300 vertices
+    // (~2.2) is 17 steps of that grid; the figures must be those of the mesh returned.
+    TriMesh far = testmesh::icosphere(3);
+    for (Vec3& p : far.vertices) p = 10 * p + Vec3(1e15, 0, 0);
+    const RemeshResult r = remesh(far, quick(300));
+    const auto said = std::find_if(r.warnings.begin(), r.warnings.end(),
+                                   [](const std::string& w) { return w.find("too coarse") != std::string::npos; });
+    ASSERT_NE(said, r.warnings.end());
+    EXPECT_NE(said->find("0.125 apart"), std::string::npos) << *said;
+    TriMesh centred = r.mesh;
+    for (Vec3& p : centred.vertices) p -= Vec3(1e15, 0, 0);
+    const QualityMetrics asReturned = computeQuality(centred);
+    EXPECT_NEAR(r.metrics.thetaMin, asReturned.thetaMin, 1e-9);
+    EXPECT_NEAR(r.metrics.qAvg, asReturned.qAvg, 1e-12);
+    // The same sphere at the origin: nothing to say.
+    const RemeshResult near = remesh(testmesh::icosphere(3), quick(300));
+    for (const std::string& w : near.warnings) EXPECT_EQ(w.find("too coarse"), std::string::npos) << w;
 }
