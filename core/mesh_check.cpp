@@ -1,15 +1,14 @@
 #include "mesh_check.h"
 
-#include "disjoint_sets.h"
 #include "errors.h"
 #include "mesh_edges.h"
+#include "surface_gluing.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <numeric>
 #include <sstream>
-#include <tuple>
 
 namespace fieldcvt {
 
@@ -38,7 +37,6 @@ std::string point(const Vec3& p)
 
 std::string vertexAt(const TriMesh& input, int v) { return std::to_string(v) + " " + point(input.vertices[v]); }
 
-int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
 
 }  // namespace
 
@@ -66,22 +64,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     // anything else: the faces on either side of a seam then share their edge.
     std::vector<int> rep(n);
     std::iota(rep.begin(), rep.end(), 0);
-    if (!repaired) {
-        std::vector<int> order;
-        order.reserve(n);
-        for (int v = 0; v < n; ++v)
-            if (referenced[v]) order.push_back(v);
-        auto key = [&](int v) {
-            const Vec3& p = input.vertices[v];
-            return std::make_tuple(p.x(), p.y(), p.z(), v);
-        };
-        std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
-        for (size_t r = 1; r < order.size(); ++r)
-            if (input.vertices[order[r]] == input.vertices[order[r - 1]]) {
-                rep[order[r]] = rep[order[r - 1]];
-                ++report.mergedDuplicateVertices;
-            }
-    }
+    if (!repaired) rep = exactDuplicateRepresentatives(input.vertices, referenced, report.mergedDuplicateVertices);
 
     // 2. Faces: drop degenerate ones (repeated corner, zero area; thin needles of non-zero area
     // are fine for the RVD and kept) and exact duplicates (same corner set; not searched for in
@@ -148,97 +131,41 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
                                     vertexAt(input, edges.ends[first][0]) + " and " + vertexAt(input, edges.ends[first][1]));
     }
 
-    // Neighbours across each edge (at most one now), and whether both faces run along the
-    // edge in the same direction (inconsistent orientation).
-    struct Across {
-        int face = -1;
-        bool same = false;
-        int lo = -1, hi = -1;
-    };
-    std::vector<std::array<Across, 3>> across(faceCount);
-    std::vector<int> acrossCount(faceCount, 0);
-    for (int e = 0; e < edges.edgeCount(); ++e) {
-        if (edges.faceCount(e) != 2) continue;
-        const int s = edges.face(e, 0), t = edges.face(e, 1);
-        const bool same = edges.firstTwoSameDirection(faces, e);
-        const auto [lo, hi] = edges.ends[e];
-        across[s][acrossCount[s]++] = {t, same, lo, hi};
-        across[t][acrossCount[t]++] = {s, same, lo, hi};
-    }
-
     // 4. Orientation: per connected component, a breadth-first walk from its first face flips
     // every face that disagrees with the face it was reached from. A face reached again with
     // the opposite requirement closes an orientation-reversing loop: a Möbius-like surface.
-    std::vector<int> component(faceCount, -1);
-    std::vector<char> flip(faceCount, 0);
-    {
-        std::vector<int> queue;
-        queue.reserve(faceCount);
-        for (int start = 0; start < faceCount; ++start) {
-            if (component[start] >= 0) continue;
-            const int c = report.components++;
-            component[start] = c;
-            queue.assign(1, start);
-            for (size_t head = 0; head < queue.size(); ++head) {
-                const int f = queue[head];
-                for (int k = 0; k < acrossCount[f]; ++k) {
-                    const Across& a = across[f][k];
-                    const char required = flip[f] ^ static_cast<char>(a.same);
-                    if (component[a.face] < 0) {
-                        component[a.face] = c;
-                        flip[a.face] = required;
-                        queue.push_back(a.face);
-                    } else if (flip[a.face] != required) {
-                        throw InvalidInputError(
-                            "a connected component is not orientable (like a Moebius strip, no consistent orientation exists): "
-                            "input faces " + std::to_string(faceOrigin[f]) + " and " + std::to_string(faceOrigin[a.face]) +
-                            " disagree across the edge between vertices " + vertexAt(input, a.lo) + " and " + vertexAt(input, a.hi));
-                    }
-                }
-            }
-        }
-        for (int f = 0; f < faceCount; ++f)
-            if (flip[f]) {
-                std::swap(faces[f][1], faces[f][2]);
-                ++report.flippedFaces;
-            }
-    }
+    const std::vector<int> partner = glueTwoSidedEdges(edges, faceCount);
+    const Orientation orientation = orientByWalk(faces, partner, [&](int h) {
+        const int g = partner[h] / 3, a = faces[h / 3][h % 3], b = faces[h / 3][(h % 3 + 1) % 3];
+        throw InvalidInputError("a connected component is not orientable (like a Moebius strip, no consistent orientation "
+                                "exists): input faces " + std::to_string(faceOrigin[h / 3]) + " and " +
+                                std::to_string(faceOrigin[g]) + " disagree across the edge between vertices " +
+                                vertexAt(input, std::min(a, b)) + " and " + vertexAt(input, std::max(a, b)));
+    });
+    report.components = orientation.components;
     report.componentAreas.assign(report.components, 0.0);
     for (int f = 0; f < faceCount; ++f) {
         const Face& t = faces[f];
-        report.componentAreas[component[f]] += triangleArea(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
+        report.componentAreas[orientation.component[f]] += triangleArea(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
     }
 
     // 5. Non-manifold vertices: corners of the faces around a vertex are joined across the
     // (manifold) edges they share; each resulting fan beyond the one of the vertex's first face
-    // gets its own copy of the vertex.
-    std::vector<int> copySource;  // working vertex n + i is a copy of input vertex copySource[i]
+    // gets its own copy of the vertex. Then the flips of step 4.
+    std::vector<int> cornerVertex, copySource;  // working vertex n + i is a copy of input vertex copySource[i]
+    splitIntoFans(faces, partner, n, orientation.flip, cornerVertex, copySource);
     {
-        DisjointSets corners(3 * faceCount);
-        for (int f = 0; f < faceCount; ++f)
-            for (int k = 0; k < acrossCount[f]; ++k) {
-                const Across& a = across[f][k];
-                if (a.face < f) continue;  // each shared edge once
-                for (int v : {a.lo, a.hi}) corners.unite(3 * f + cornerOf(faces[f], v), 3 * a.face + cornerOf(faces[a.face], v));
-            }
-        std::vector<int> firstFan(n, -1);     // per vertex: root of its first fan
-        std::vector<int> copyOfFan(3 * faceCount, -1);  // per fan root (other than a first fan): its vertex
         std::vector<char> split(n, 0);
-        for (int f = 0; f < faceCount; ++f)
-            for (int k = 0; k < 3; ++k) {
-                const int v = faces[f][k];
-                const int root = corners.find(3 * f + k);
-                if (firstFan[v] < 0) firstFan[v] = root;
-                if (root == firstFan[v]) continue;
-                if (copyOfFan[root] < 0) {
-                    copyOfFan[root] = n + static_cast<int>(copySource.size());
-                    copySource.push_back(v);
-                    split[v] = 1;
-                }
-                faces[f][k] = copyOfFan[root];
-            }
+        for (int v : copySource) split[v] = 1;
         report.splitNonManifoldVertices = static_cast<int>(std::count(split.begin(), split.end(), 1));
         report.addedVertexCopies = static_cast<int>(copySource.size());
+    }
+    for (int f = 0; f < faceCount; ++f) {
+        faces[f] = {cornerVertex[3 * f], cornerVertex[3 * f + 1], cornerVertex[3 * f + 2]};
+        if (orientation.flip[f]) {
+            std::swap(faces[f][1], faces[f][2]);
+            ++report.flippedFaces;
+        }
     }
 
     // 6. Compact: referenced vertices in their original order, then the split copies.

@@ -3,6 +3,7 @@
 #include "disjoint_sets.h"
 #include "errors.h"
 #include "mesh_edges.h"
+#include "surface_gluing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -200,18 +201,7 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     const double toInputLength = std::ldexp(1.0, exponent);
 
     // 1. Vertices at the same coordinates (-0 = +0), then border vertices within the tolerance.
-    std::vector<int> rep(n);
-    std::iota(rep.begin(), rep.end(), 0);
-    {
-        std::unordered_map<std::array<double, 3>, int, TripleHash> first;
-        first.reserve(size_t(n));
-        for (int v = 0; v < n; ++v) {
-            if (!referenced[v]) continue;
-            const std::array<double, 3> key{pos[v].x() + 0.0, pos[v].y() + 0.0, pos[v].z() + 0.0};
-            const auto [it, added] = first.emplace(key, v);
-            if (!added) rep[v] = it->second, ++report.mergedDuplicateVertices;
-        }
-    }
+    std::vector<int> rep = exactDuplicateRepresentatives(pos, referenced, report.mergedDuplicateVertices);
     std::vector<Face> faces;
     faces.reserve(input.faces.size());
     for (const Face& t : input.faces) faces.push_back({rep[t[0]], rep[t[1]], rep[t[2]]});
@@ -275,21 +265,16 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     }
     const int faceCount = static_cast<int>(faces.size());
     auto origin = [&](int h) { return faces[h / 3][h % 3]; };
-    auto target = [&](int h) { return faces[h / 3][(h % 3 + 1) % 3]; };
 
     // 3. Which face continues which across each edge: partner[h] is the half-edge glued to h.
     const EdgeTable edges = buildEdgeTable(faces, n);
-    std::vector<int> partner(3 * size_t(faceCount), -1);
+    std::vector<int> partner = glueTwoSidedEdges(edges, faceCount);
     auto cut = [&](int h) {
         if (partner[h] >= 0) partner[partner[h]] = -1;
         partner[h] = -1;
     };
     for (int e = 0; e < edges.edgeCount(); ++e) {
         const int k = edges.faceCount(e);
-        if (k == 2) {
-            partner[edges.halfEdge(e, 0)] = edges.halfEdge(e, 1);
-            partner[edges.halfEdge(e, 1)] = edges.halfEdge(e, 0);
-        }
         if (k <= 2) continue;
         // Around the edge lo -> hi, by angle: a face running lo -> hi faces the larger angles,
         // one running hi -> lo the smaller; two consecutive faces enclosing the same side (the
@@ -315,34 +300,18 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     // 4. Orientation: a breadth-first walk per component; a glued edge whose faces disagree
     // with the orientation reached so far is cut (the seam of a Moebius-like piece).
     {
-        std::vector<int> component(faceCount, -1);
-        std::vector<char> flip(faceCount, 0);
-        std::vector<int> queue;
-        int components = 0;
-        for (int start = 0; start < faceCount; ++start) {
-            if (component[start] >= 0) continue;
-            const int c = components++;
-            bool cutHere = false;
-            component[start] = c;
-            queue.assign(1, start);
-            for (size_t head = 0; head < queue.size(); ++head) {
-                const int f = queue[head];
-                for (int k = 0; k < 3; ++k) {
-                    const int h = 3 * f + k, p = partner[h];
-                    if (p < 0) continue;
-                    const int g = p / 3;
-                    const char required = flip[f] ^ static_cast<char>(origin(h) == origin(p));
-                    if (component[g] < 0) {
-                        component[g] = c, flip[g] = required;
-                        queue.push_back(g);
-                    } else if (flip[g] != required) {
-                        cut(h);
-                        ++report.seamEdges;
-                        cutHere = true;
-                    }
-                }
-            }
-            report.nonOrientableComponents += cutHere;
+        std::vector<char> cutIn;  // per component, whether it was cut
+        const Orientation orientation = orientByWalk(faces, partner, [&](int h) {
+            cut(h);
+            ++report.seamEdges;
+            cutIn.resize(size_t(faceCount), 0);
+            cutIn[size_t(h / 3)] = 1;  // marked on a face; counted per component below
+        });
+        if (!cutIn.empty()) {
+            std::vector<char> componentCut(size_t(orientation.components), 0);
+            for (int f = 0; f < faceCount; ++f)
+                if (cutIn[f]) componentCut[orientation.component[f]] = 1;
+            report.nonOrientableComponents = static_cast<int>(std::count(componentCut.begin(), componentCut.end(), 1));
         }
     }
 
@@ -352,25 +321,7 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     std::vector<int> cornerVertex(3 * size_t(faceCount));
     std::vector<int> copySource;  // vertex n + i is a copy of copySource[i]
     for (int round = 0;; ++round) {
-        DisjointSets corners(3 * faceCount);
-        for (int h = 0; h < 3 * faceCount; ++h) {
-            const int p = partner[h];
-            if (p < h) continue;
-            const int f = h / 3, g = p / 3;
-            for (int v : {origin(h), target(h)}) corners.unite(3 * f + cornerOf(faces[f], v), 3 * g + cornerOf(faces[g], v));
-        }
-        std::vector<int> firstFan(n, -1), copyOfFan(3 * size_t(faceCount), -1);
-        copySource.clear();
-        for (int c = 0; c < 3 * faceCount; ++c) {
-            const int v = faces[c / 3][c % 3], root = corners.find(c);
-            if (firstFan[v] < 0) firstFan[v] = root;
-            if (root == firstFan[v]) {
-                cornerVertex[c] = v;
-                continue;
-            }
-            if (copyOfFan[root] < 0) copyOfFan[root] = n + static_cast<int>(copySource.size()), copySource.push_back(v);
-            cornerVertex[c] = copyOfFan[root];
-        }
+        splitIntoFans(faces, partner, n, {}, cornerVertex, copySource);
         bool detached = false;
         std::vector<std::pair<std::array<int, 2>, int>> ends;
         for (int e = 0; e < edges.edgeCount(); ++e) {
