@@ -2,6 +2,7 @@
 
 #include "errors.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -62,6 +63,20 @@ long long Arguments::integer(const std::string& name, long long fallback, long l
     if (n < min || n > max)
         throw UsageError("--" + name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + s);
     return n;
+}
+
+int Arguments::saturatedInt(const std::string& name, int fallback) const
+{
+    const auto value = text(name);
+    if (!value) return fallback;
+    const std::string& s = *value;
+    char* end = nullptr;
+    errno = 0;
+    const long long n = std::strtoll(s.c_str(), &end, 10);
+    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || *end != '\0')
+        throw UsageError("--" + name + " expects an integer, got " + quoteInput(s));
+    // strtoll saturates at its own range (ERANGE), and so do we at int's.
+    return static_cast<int>(std::clamp<long long>(n, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
 std::uint64_t Arguments::unsignedInteger(const std::string& name, std::uint64_t fallback) const

@@ -2,6 +2,7 @@
 // Strict command-line parsing: every malformed or out-of-range argument is a UsageError (exit
 // code 2), so a typo never silently becomes a default.
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -33,7 +34,11 @@ public:
     //! Whether the lower bound of number() is itself allowed.
     enum class Bound { Inclusive, Exclusive };
     //! A finite number >= min (> min with Bound::Exclusive; NaN and infinities are refused).
-    double number(const std::string& name, double fallback, double min, Bound bound = Bound::Inclusive) const;
+    double number(const std::string& name, double fallback, double min = -std::numeric_limits<double>::infinity(),
+                  Bound bound = Bound::Inclusive) const;
+    //! An integer of any size, saturated to int's range: the core's parameter check
+    //! (checkRemeshParams) says what range it takes.
+    int saturatedInt(const std::string& name, int fallback) const;
 
 private:
     std::vector<std::string> positional_;

@@ -82,6 +82,25 @@ void checkOutputPath(const std::string& path, const std::string& input)
     checkWritable(path, input);
 }
 
+void checkOptions(const RemeshParams& params)
+{
+    ParameterNames names;
+    names.vertexCount = "--vertices";
+    names.lambda = "--lambda";
+    names.lloydIterations = "--lloyd-iterations";
+    names.cvtIterations = "--cvt-iterations";
+    names.fcvtIterations = "--fcvt-iterations";
+    names.threads = "--threads";
+    names.timeLimit = "--time-limit";
+    names.featureAngle = "--feature-angle";
+    names.gradation = "--gradation";
+    try {
+        checkRemeshParams(params, names);
+    } catch (const InvalidInputError& e) {
+        throw UsageError(e.what());
+    }
+}
+
 bool isPlyPath(const std::string& path)
 {
     std::string ext = std::filesystem::path(path).extension().string();

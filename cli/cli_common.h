@@ -6,6 +6,7 @@
 #include "field.h"
 #include "mesh.h"
 #include "mesh_io.h"
+#include "remesh.h"
 
 #include <chrono>
 #include <string>
@@ -32,6 +33,9 @@ void checkDistinctOutputs(const std::string& path, const std::string& other, con
 
 //! checkWritable, and a mesh extension writeMesh handles.
 void checkOutputPath(const std::string& path, const std::string& input);
+
+//! The core's parameter check (checkRemeshParams) with the options' names: a UsageError.
+void checkOptions(const RemeshParams& params);
 
 //! True when the path ends in .ply (any case).
 bool isPlyPath(const std::string& path);

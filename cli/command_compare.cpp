@@ -198,12 +198,13 @@ int runCompare(const std::vector<std::string>& args)
     const std::string& inPath = fileArguments(a, 1, "compare", "exactly one input file")[0];
     if (!a.has("vertices")) throw UsageError("compare needs --vertices N (the target vertex count)");
     RemeshParams fcvt;
-    fcvt.vertexCount = static_cast<int>(a.integer("vertices", fcvt.vertexCount, kMinVertexCount, kMaxVertexCount));
+    fcvt.vertexCount = a.saturatedInt("vertices", fcvt.vertexCount);
     fcvt.seed = a.unsignedInteger("seed", fcvt.seed);
-    fcvt.lambda = a.number("lambda", fcvt.lambda, 0.0);
+    fcvt.lambda = a.number("lambda", fcvt.lambda);
     fcvt.fieldSource = fieldOption(a, fcvt.fieldSource, true);
-    fcvt.threads = static_cast<int>(a.integer("threads", fcvt.threads, 0, 4096));
+    fcvt.threads = a.saturatedInt("threads", fcvt.threads);
     fcvt.valenceOptimization = !a.flag("no-valence");
+    checkOptions(fcvt);
     if (fcvt.fieldSource == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
                          inPath + " is not a .ply file");

@@ -84,37 +84,38 @@ void printUsage()
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
+//! The options as the core's parameters: the syntax checked here, the ranges by the core's one
+//! check (checkRemeshParams) in the options' names, as a usage error before any work.
 RemeshParams paramsFrom(const Arguments& a)
 {
     if (a.has("vertices") == a.has("target-length"))
         throw UsageError("remesh needs exactly one of --vertices N (the target vertex count) and --target-length L "
                          "(the target edge length)");
     RemeshParams p;
-    if (a.has("vertices")) p.vertexCount = static_cast<int>(a.integer("vertices", p.vertexCount, kMinVertexCount, kMaxVertexCount));
+    p.vertexCount = a.saturatedInt("vertices", p.vertexCount);
     p.fieldSource = fieldOption(a, p.fieldSource, true);
-    p.lambda = a.number("lambda", p.lambda, 0.0);
+    p.lambda = a.number("lambda", p.lambda);
     if (a.has("lloyd-iterations"))  // from either start
-        p.lloydIterations = p.latticeLloydIterations = static_cast<int>(a.integer("lloyd-iterations", p.lloydIterations, 0, INT_MAX));
-    p.cvtIterations = static_cast<int>(a.integer("cvt-iterations", p.cvtIterations, 0, INT_MAX));
-    p.fcvtIterations = static_cast<int>(a.integer("fcvt-iterations", p.fcvtIterations, 0, INT_MAX));
+        p.lloydIterations = p.latticeLloydIterations = a.saturatedInt("lloyd-iterations", p.lloydIterations);
+    p.cvtIterations = a.saturatedInt("cvt-iterations", p.cvtIterations);
+    p.fcvtIterations = a.saturatedInt("fcvt-iterations", p.fcvtIterations);
     p.seed = a.unsignedInteger("seed", p.seed);
-    p.threads = static_cast<int>(a.integer("threads", p.threads, 0, 4096));
-    p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds, 0.0);
+    p.threads = a.saturatedInt("threads", p.threads);
+    p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds);
     p.valenceOptimization = !a.flag("no-valence");
     p.latticeStart = !a.flag("random-start");
     if (a.flag("full-surface")) p.optimisationFacesPerSample = 0;
     p.repair = !a.flag("no-repair");
-    p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees, 0.0);
-    if (p.featureAngleDegrees > 180)
-        throw UsageError("--feature-angle must be 0..180 degrees (0 = off), got " + *a.text("feature-angle"));
+    p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees);
     if (const auto adaptive = a.text("adaptive")) {
         if (*adaptive == "curvature") p.density = DensitySource::Curvature;
         else if (*adaptive == "none") p.density = DensitySource::Uniform;
-        else throw UsageError("--adaptive must be 'curvature' or 'none', got '" + *adaptive + "'");
+        else throw UsageError("--adaptive must be 'curvature' or 'none', got " + quoteInput(*adaptive));
     }
     if (a.has("gradation") && p.density != DensitySource::Curvature)
         throw UsageError("--gradation applies to --adaptive curvature only");
-    p.gradation = a.number("gradation", p.gradation, 0.0);
+    p.gradation = a.number("gradation", p.gradation);
+    checkOptions(p);
     return p;
 }
 

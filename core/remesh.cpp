@@ -12,32 +12,6 @@ namespace fieldcvt {
 
 namespace {
 
-void validate(const RemeshParams& p)
-{
-    if (p.initialSamples.empty()) {
-        if (p.vertexCount < kMinVertexCount || p.vertexCount > kMaxVertexCount)
-            throw InvalidInputError("the vertex count must be " + vertexCountRange() + ", got " + std::to_string(p.vertexCount));
-    } else {
-        if (p.initialSamples.size() < 4)
-            throw InvalidInputError("at least 4 initial samples are needed (got " + std::to_string(p.initialSamples.size()) + ")");
-        for (const Vec3& x : p.initialSamples)
-            if (!x.allFinite()) throw InvalidInputError("an initial sample has a NaN or infinite coordinate");
-    }
-    if (!std::isfinite(p.lambda) || p.lambda < 0) throw InvalidInputError("lambda must be a finite number >= 0");
-    if (p.lloydIterations < 0 || p.latticeLloydIterations < 0 || p.cvtIterations < 0 || p.fcvtIterations < 0 || p.boundaryIterations < 0)
-        throw InvalidInputError("iteration counts must be >= 0");
-    if (p.threads < 0) throw InvalidInputError("thread count must be >= 0");
-    if (p.optimisationFacesPerSample < 0) throw InvalidInputError("optimisation faces per sample must be >= 0");
-    if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");
-    if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds)) throw InvalidInputError("time limit must be >= 0 seconds");
-    if (!(p.featureAngleDegrees >= 0 && p.featureAngleDegrees <= 180))
-        throw InvalidInputError("feature angle must be between 0 and 180 degrees (0 = no sharp features)");
-    if (!std::isfinite(p.gradation) || p.gradation < 0) throw InvalidInputError("gradation must be a finite number >= 0");
-    if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0)
-        throw InvalidInputError("valence optimisation step counts must be >= 0");
-    if (p.valence.borderWeight < 1) throw InvalidInputError("valence optimisation border weight must be >= 1");
-}
-
 //! The OpenMP thread count of a run (RemeshParams::threads, 0 = as it is), restored after it:
 //! the caller's process (MeshLab's) keeps its own setting.
 class ThreadCountScope {
@@ -79,9 +53,49 @@ VertexCountFromLength vertexCountForLength(double area, double length, const std
     return out;
 }
 
+void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
+{
+    auto fail = [](const std::string& name, const std::string& range, const std::string& got) {
+        throw InvalidInputError(name + " must be " + range + ", got " + got);
+    };
+    auto number = [](double x) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", x);
+        return std::string(text);
+    };
+    if (p.initialSamples.empty()) {
+        if (p.vertexCount < kMinVertexCount || p.vertexCount > kMaxVertexCount)
+            fail(names.vertexCount, vertexCountRange(), std::to_string(p.vertexCount));
+    } else {
+        if (p.initialSamples.size() < 4)
+            throw InvalidInputError("at least 4 initial samples are needed (got " + std::to_string(p.initialSamples.size()) + ")");
+        for (const Vec3& x : p.initialSamples)
+            if (!x.allFinite()) throw InvalidInputError("an initial sample has a NaN or infinite coordinate");
+    }
+    if (!std::isfinite(p.lambda) || p.lambda < 0) fail(names.lambda, "a finite number >= 0", number(p.lambda));
+    if (p.lloydIterations < 0) fail(names.lloydIterations, ">= 0", std::to_string(p.lloydIterations));
+    if (p.latticeLloydIterations < 0) fail(names.lloydIterations, ">= 0", std::to_string(p.latticeLloydIterations));
+    if (p.cvtIterations < 0) fail(names.cvtIterations, ">= 0", std::to_string(p.cvtIterations));
+    if (p.fcvtIterations < 0) fail(names.fcvtIterations, ">= 0", std::to_string(p.fcvtIterations));
+    if (p.threads < 0 || p.threads > kMaxThreads)
+        fail(names.threads, "between 0 and " + std::to_string(kMaxThreads) + " (0 = all cores)", std::to_string(p.threads));
+    if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds))
+        fail(names.timeLimit, "a finite number of seconds >= 0 (0 = none)", number(p.timeLimitSeconds));
+    if (!(p.featureAngleDegrees >= 0 && p.featureAngleDegrees <= 180))
+        fail(names.featureAngle, "0..180 degrees (0 = off)", number(p.featureAngleDegrees));
+    if (!std::isfinite(p.gradation) || p.gradation < 0) fail(names.gradation, "a finite number >= 0", number(p.gradation));
+    // Settings no front end offers: the core's words.
+    if (p.boundaryIterations < 0) throw InvalidInputError("border iteration count must be >= 0");
+    if (p.optimisationFacesPerSample < 0) throw InvalidInputError("optimisation faces per sample must be >= 0");
+    if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");
+    if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0)
+        throw InvalidInputError("valence optimisation step counts must be >= 0");
+    if (p.valence.borderWeight < 1) throw InvalidInputError("valence optimisation border weight must be >= 1");
+}
+
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
 {
-    validate(params);
+    checkRemeshParams(params);
     const ThreadCountScope threads(params.threads);
     RemeshResult result;
     RemeshRun run(input, params, progress, result);

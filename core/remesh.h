@@ -29,6 +29,8 @@ enum class DensitySource { Uniform, Curvature, PerVertex };
 //! the maximum needs about 65 GB.
 constexpr int kMinVertexCount = 4;
 constexpr int kMaxVertexCount = 5000000;
+//! RemeshParams::threads at most (0 = all cores).
+constexpr int kMaxThreads = 4096;
 //! "between 4 and 5000000", the one wording of that limit in every message.
 std::string vertexCountRange();
 
@@ -143,6 +145,25 @@ struct RemeshParams {
     bool repair = true;
     RepairParams repairParams;
 };
+
+//! How a front end names the parameters in its messages: the CLI by its options
+//! ("--vertices"), the MeshLab filter by label and script name ("'Target vertices'
+//! (vertexCount)"). The defaults are the core's own words.
+struct ParameterNames {
+    std::string vertexCount = "the vertex count";
+    std::string lambda = "lambda";
+    std::string lloydIterations = "the Lloyd iteration count";
+    std::string cvtIterations = "the CVT iteration count";
+    std::string fcvtIterations = "the FCVT iteration count";
+    std::string threads = "the thread count";
+    std::string timeLimit = "the time limit";
+    std::string featureAngle = "the feature angle";
+    std::string gradation = "the gradation";
+};
+
+//! The one check of RemeshParams' ranges (remesh() runs it too): throws InvalidInputError with
+//! one line naming the parameter as `names` says, its range and the value given.
+void checkRemeshParams(const RemeshParams& params, const ParameterNames& names = {});
 
 //! Energies after one L-BFGS step (an evaluation that lowered E_tot) or one Lloyd step.
 struct EnergyRecord {

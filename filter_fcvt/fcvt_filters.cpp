@@ -621,25 +621,12 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
                 .arg(size.vertexCount));
         vertexCount = size.vertexCount;
     }
-    if (vertexCount < fieldcvt::kMinVertexCount || vertexCount > fieldcvt::kMaxVertexCount)
-        return fail(QString("FCVT: %1 must be %2 (got %3)")
-                        .arg(parameterName(kVertexCount))
-                        .arg(QString::fromStdString(fieldcvt::vertexCountRange()))
-                        .arg(vertexCount));
-    if (!(lambda >= 0) || !std::isfinite(lambda))
-        return fail(QString("FCVT: %1 must be a finite number, 0 or more (got %2)").arg(parameterName(kLambda)).arg(lambda));
-    if (cvtIterations < 0)
-        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kCvtIterations)).arg(cvtIterations));
-    if (fcvtIterations < 0)
-        return fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kFcvtIterations)).arg(fcvtIterations));
     // A script may carry any integer as the enum value: MeshLab does not check the range.
     checkFieldSourceAndSeed(fieldSource, kAllFieldSources, seed);
     // Parameters added after the first release are read with their defaults when a script lacks
     // them: MeshLab's GUI runs a script with the script's own list (MainWindow::runFilterScript).
     const fieldcvt::RemeshParams defaults;
     const double featureAngle = floatParam(par, kFeatureAngle, defaults.featureAngleDegrees);
-    if (!(featureAngle >= 0 && featureAngle <= 180))
-        return fail(QString("FCVT: %1 must be 0..180 degrees, 0 = off (got %2)").arg(parameterName(kFeatureAngle)).arg(featureAngle));
 
     fieldcvt::RemeshParams params;
     params.vertexCount = vertexCount;
@@ -656,14 +643,22 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
                         .arg(parameterName(kAdaptive))
                         .arg(density));
     const double gradation = floatParam(par, kGradation, defaults.gradation);
-    if (!(gradation >= 0) || !std::isfinite(gradation))
-        return fail(QString("FCVT: %1 must be a finite number, 0 or more (got %2)")
-                        .arg(parameterName(kGradation))
-                        .arg(gradation));
-    if (density == kDensityCurvature) {
-        params.density = fieldcvt::DensitySource::Curvature;
-        params.gradation = gradation;
+    params.gradation = gradation;  // checked even when unused: a script's typo is said
+    if (density == kDensityCurvature) params.density = fieldcvt::DensitySource::Curvature;
+    // The core's one range check, in the dialog's names.
+    fieldcvt::ParameterNames names;
+    names.vertexCount = parameterName(kVertexCount).toStdString();
+    names.lambda = parameterName(kLambda).toStdString();
+    names.cvtIterations = parameterName(kCvtIterations).toStdString();
+    names.fcvtIterations = parameterName(kFcvtIterations).toStdString();
+    names.featureAngle = parameterName(kFeatureAngle).toStdString();
+    names.gradation = parameterName(kGradation).toStdString();
+    try {
+        fieldcvt::checkRemeshParams(params, names);
+    } catch (const fieldcvt::InvalidInputError& e) {
+        return fail(QString("FCVT: %1").arg(QString::fromStdString(e.what())));
     }
+    if (density != kDensityCurvature) params.gradation = defaults.gradation;
     RemeshInputs inputs;
     inputs.densityFromQuality = density == kDensityVertexQuality;
     inputs.featuresFromSelection = boolParam(par, kFeatureSelection, false);

@@ -330,3 +330,35 @@ TEST(Remesh, CoordinatesTooCoarseForTheEdgeLengthAreSaidAndMeasuredAsReturned)
     const RemeshResult near = remesh(testmesh::icosphere(3), quick(300));
     for (const std::string& w : near.warnings) EXPECT_EQ(w.find("too coarse"), std::string::npos) << w;
 }
+
+TEST(Remesh, ParameterCheckNamesEachParameterAsItsFrontEndCallsIt)
+{
+    ParameterNames names;
+    names.vertexCount = "'Target vertices' (vertexCount)";
+    names.lambda = "--lambda";
+    auto message = [&](const RemeshParams& p) -> std::string {
+        try {
+            checkRemeshParams(p, names);
+        } catch (const InvalidInputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    RemeshParams p;
+    EXPECT_EQ(message(p), "");
+    p.vertexCount = 2;
+    EXPECT_EQ(message(p), "'Target vertices' (vertexCount) must be between 4 and 5000000, got 2");
+    p = RemeshParams{};
+    p.lambda = -1;
+    EXPECT_EQ(message(p), "--lambda must be a finite number >= 0, got -1");
+    p = RemeshParams{};
+    p.featureAngleDegrees = std::nan("");
+    EXPECT_EQ(message(p), "the feature angle must be 0..180 degrees (0 = off), got nan");
+    p = RemeshParams{};
+    p.threads = kMaxThreads + 1;
+    EXPECT_NE(message(p).find("the thread count must be between 0 and 4096"), std::string::npos);
+    // remesh() runs the same check, in the core's words.
+    p = RemeshParams{};
+    p.cvtIterations = -3;
+    EXPECT_THROW(remesh(testmesh::icosphere(1), p), InvalidInputError);
+}

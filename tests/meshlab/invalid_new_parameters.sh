@@ -50,7 +50,7 @@ expect_failure() {
   [ ! -e "$work/out/$name.ply" ] || fail "$name: an output was written despite the failure"
 }
 
-expect_failure angle "$work/out/torus.off" "FCVT: 'Feature angle (deg)' (featureAngle) must be 0..180 degrees, 0 = off (got 200)" featureAngle=200
+expect_failure angle "$work/out/torus.off" "FCVT: 'Feature angle (deg)' (featureAngle) must be 0..180 degrees (0 = off), got 200" featureAngle=200
 expect_failure noquality "$work/out/torus.off" "FCVT: 'Vertex density' (adaptive) 'vertex quality' needs per-vertex quality on layer 'torus.off'" adaptive=2
 expect_failure badquality "$work/out/torus-q.ply" "must be finite and above 0 at every vertex" adaptive=2
 

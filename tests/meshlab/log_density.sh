@@ -112,6 +112,6 @@ fi
 # C.
 { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'; filter_body "$shipped" lambda=-1; echo '</FilterScript>'; } > "$work/out/lambda.mlx"
 run_meshlabserver "$server" "$work/out/lambda.txt" -i "$work/out/torus.off" -o "$work/out/never.ply" -s "$work/out/lambda.mlx"
-grep -q "FCVT: 'Field weight (lambda)' (lambda) must be a finite number, 0 or more (got -1)" "$work/out/lambda.txt" \
+grep -q "FCVT: 'Field weight (lambda)' (lambda) must be a finite number >= 0, got -1" "$work/out/lambda.txt" \
   || fail "the lambda error does not name the dialog's label"
 echo "PASS"
