@@ -50,18 +50,32 @@ std::optional<std::string> Arguments::text(const std::string& name) const
     return it->second;
 }
 
+namespace {
+
+//! The whole of `s` as a decimal integer; `outOfRange` is set when it does not fit a long long (the
+//! value is then saturated, as strtoll does). Throws a UsageError naming --name otherwise.
+long long parseInteger(const std::string& name, const std::string& s, bool& outOfRange)
+{
+    char* end = nullptr;
+    errno = 0;
+    const long long n = std::strtoll(s.c_str(), &end, 10);
+    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || *end != '\0')
+        throw UsageError("--" + name + " expects an integer, got " + quoteInput(s));
+    outOfRange = errno == ERANGE;
+    return n;
+}
+
+}  // namespace
+
 long long Arguments::integer(const std::string& name, long long fallback, long long min, long long max) const
 {
     const auto value = text(name);
     if (!value) return fallback;
-    const std::string& s = *value;
-    char* end = nullptr;
-    errno = 0;
-    const long long n = std::strtoll(s.c_str(), &end, 10);
-    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || *end != '\0' || errno == ERANGE)
-        throw UsageError("--" + name + " expects an integer, got " + quoteInput(s));
+    bool outOfRange = false;
+    const long long n = parseInteger(name, *value, outOfRange);
+    if (outOfRange) throw UsageError("--" + name + " expects an integer, got " + quoteInput(*value));
     if (n < min || n > max)
-        throw UsageError("--" + name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + s);
+        throw UsageError("--" + name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + *value);
     return n;
 }
 
@@ -69,13 +83,8 @@ int Arguments::saturatedInt(const std::string& name, int fallback) const
 {
     const auto value = text(name);
     if (!value) return fallback;
-    const std::string& s = *value;
-    char* end = nullptr;
-    errno = 0;
-    const long long n = std::strtoll(s.c_str(), &end, 10);
-    if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || *end != '\0')
-        throw UsageError("--" + name + " expects an integer, got " + quoteInput(s));
-    // strtoll saturates at its own range (ERANGE), and so do we at int's.
+    bool outOfRange = false;  // saturated, as int's range is below
+    const long long n = parseInteger(name, *value, outOfRange);
     return static_cast<int>(std::clamp<long long>(n, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
