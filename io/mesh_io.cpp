@@ -50,7 +50,7 @@ std::string readFileBytes(const std::string& path)
 
 void addPolygon(TriMesh& mesh, const std::vector<int>& polygon, MeshReadInfo& info)
 {
-    triangulatePolygon(mesh.vertices, polygon, mesh.faces);
+    if (triangulatePolygon(mesh.vertices, polygon, mesh.faces) == PolygonShape::NotSimple) ++info.polygonsNotSimple;
     if (polygon.size() > 3) ++info.polygonsTriangulated;
 }
 
@@ -145,6 +145,9 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* 
         }
     if (out.polygonsTriangulated > 0)
         out.notes.push_back("triangulated " + std::to_string(out.polygonsTriangulated) + " polygons");
+    if (out.polygonsNotSimple > 0)
+        out.warnings.push_back(std::to_string(out.polygonsNotSimple) + " polygons are not simple (their edges cross or touch, " +
+                               "or their corners are on one line): triangulated as well as possible, their triangles may overlap");
     return mesh;
 }
 

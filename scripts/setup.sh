@@ -8,7 +8,7 @@ export DEBIAN_FRONTEND=noninteractive
 
 packages=(
   build-essential cmake pkg-config dpkg-dev
-  libeigen3-dev liblbfgspp-dev libnanoflann-dev
+  libeigen3-dev liblbfgspp-dev libnanoflann-dev libcgal-dev
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   meshlab xvfb xauth python3 debootstrap

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace fieldcvt {
 namespace {
@@ -60,6 +61,116 @@ TEST(Triangulate, NonConvexPolygonStaysInside)
 {
     // An L whose first corner is reflex: a fan from it would cover the notch.
     expectGoodTriangulation({{1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}, {2, 0, 0}, {2, 1, 0}}, 3);
+}
+
+//! The shoelace area of a polygon in the z = 0 plane (positive counter-clockwise).
+double shoelace(const std::vector<Vec3>& p)
+{
+    double twice = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec3 &a = p[i], &b = p[(i + 1) % p.size()];
+        twice += a.x() * b.y() - a.y() * b.x();
+    }
+    return 0.5 * twice;
+}
+
+//! Triangulated as simple: n - 2 triangles, none reversed or of zero area, no overlap (their
+//! areas add up to the polygon's), every corner used.
+void expectSimpleTriangulation(const std::vector<Vec3>& points)
+{
+    std::vector<int> corners(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) corners[i] = static_cast<int>(i);
+    std::vector<Face> faces;
+    ASSERT_EQ(triangulatePolygon(points, corners, faces), PolygonShape::Simple);
+    ASSERT_EQ(faces.size(), points.size() - 2);
+    double sum = 0;
+    int reversed = 0;
+    for (const Face& t : faces) {
+        const double z = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).z();
+        reversed += !(z > 0);
+        sum += 0.5 * std::abs(z);
+    }
+    EXPECT_EQ(reversed, 0);
+    EXPECT_NEAR(sum, shoelace(points), 1e-9 * shoelace(points));
+}
+
+//! The issue-30 C: an annulus cut open, outer radius 1 and inner radius exactly 0.5, corners every
+//! 20 degrees: its reflex corners lie on diagonals between others (to rounding).
+std::vector<Vec3> cShape(int step = 20)
+{
+    std::vector<Vec3> p;
+    for (int deg = 0; deg <= 300; deg += step) p.push_back({std::cos(deg * M_PI / 180), std::sin(deg * M_PI / 180), 0});
+    for (int deg = 300; deg >= 0; deg -= step) p.push_back({0.5 * std::cos(deg * M_PI / 180), 0.5 * std::sin(deg * M_PI / 180), 0});
+    return p;
+}
+
+TEST(Triangulate, ReflexCornersOnDiagonalsFoldNothing)
+{
+    const std::vector<Vec3> c = cShape();
+    ASSERT_EQ(c.size(), 32u);
+    // 15 steps of 20 degrees between the chords of radius 1 and 0.5: the issue's 1.92.
+    EXPECT_NEAR(shoelace(c), 15 * 0.5 * std::sin(20 * M_PI / 180) * 0.75, 1e-12);
+    expectSimpleTriangulation(c);
+    // Many corners: past ear clipping, the constrained Delaunay triangulation.
+    expectSimpleTriangulation(cShape(2));
+}
+
+TEST(Triangulate, ConcavePolygonsOfAnySizeTriangulateWithoutOverlap)
+{
+    // A cap of 300 corners with 150 spikes inward (every other corner reflex): fanned before.
+    for (int n : {20, 300, 100000}) {
+        std::vector<Vec3> star;
+        for (int i = 0; i < n; ++i) {
+            const double a = 2 * M_PI * i / n, r = i % 2 ? 0.6 : 1.0;
+            star.push_back({r * std::cos(a), r * std::sin(a), 0});
+        }
+        expectSimpleTriangulation(star);
+    }
+    // A comb: 200 long thin teeth over a base, each gap a deep concavity.
+    std::vector<Vec3> comb{{-1, -1, 0}, {201, -1, 0}, {201, 0, 0}};
+    for (int t = 199; t >= 0; --t)
+        for (const Vec3& c : {Vec3(t + 0.75, 0, 0), Vec3(t + 0.75, 10, 0), Vec3(t + 0.25, 10, 0), Vec3(t + 0.25, 0, 0)}) comb.push_back(c);
+    comb.push_back({-1, 0, 0});
+    expectSimpleTriangulation(comb);
+}
+
+TEST(Triangulate, RandomStarShapedPolygonsAddUpToTheirArea)
+{
+    std::mt19937 rng(30);
+    std::uniform_real_distribution<double> radius(0.05, 1.0);
+    for (int n : {5, 17, 64, 65, 500}) {
+        for (int trial = 0; trial < 20; ++trial) {
+            std::vector<Vec3> p;
+            for (int i = 0; i < n; ++i) {
+                const double a = 2 * M_PI * i / n, r = radius(rng);
+                p.push_back({r * std::cos(a), r * std::sin(a), 0});
+            }
+            expectSimpleTriangulation(p);
+        }
+    }
+}
+
+TEST(Triangulate, SelfIntersectingPolygonsAreSaidAndStillTriangulated)
+{
+    for (const std::vector<Vec3>& bad : std::vector<std::vector<Vec3>>{
+             {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}},                 // a bow tie
+             {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0, 0}, {0, 2, 0}},      // a corner on another edge
+             {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {0, 1, 0}}}) {   // a repeated corner
+        std::vector<int> corners(bad.size());
+        for (std::size_t i = 0; i < bad.size(); ++i) corners[i] = static_cast<int>(i);
+        std::vector<Face> faces;
+        EXPECT_EQ(triangulatePolygon(bad, corners, faces), PolygonShape::NotSimple);
+        EXPECT_EQ(faces.size(), bad.size() - 2);
+    }
+    // Large: a star of 1000 corners whose last corner crosses to the other side.
+    std::vector<Vec3> star;
+    for (int i = 0; i < 1000; ++i) star.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000), 0});
+    std::swap(star[10], star[500]);
+    std::vector<int> corners(star.size());
+    for (std::size_t i = 0; i < star.size(); ++i) corners[i] = static_cast<int>(i);
+    std::vector<Face> faces;
+    EXPECT_EQ(triangulatePolygon(star, corners, faces), PolygonShape::NotSimple);
+    EXPECT_EQ(faces.size(), star.size() - 2);
 }
 
 TEST(Triangulate, FlipsRemoveZeroAreaFanTrianglesAndKeepTheSurfaceClosed)
