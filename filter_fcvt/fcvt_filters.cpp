@@ -711,6 +711,16 @@ fieldcvt::TriMesh FilterRun::surfaceOf(const MeshModel& layer)
 {
     int flipped = 0;
     fieldcvt::TriMesh mesh = fcvt_plugin::toSurfaceMesh(layer.cm, flipped);
+    // The coordinates the command line would read from the same file (the faces stay MeshLab's).
+    const fcvt_plugin::FilePrecision precision = fcvt_plugin::fullPrecisionCoordinates(layer.fullName().toStdString(), mesh);
+    if (precision == fcvt_plugin::FilePrecision::Restored)
+        logInfo(QString("FCVT input: the double-precision coordinates of '%1' (MeshLab holds them in single precision; "
+                        "the layer is as it was read), as the command line reads them")
+                    .arg(layer.fullName()));
+    else if (precision == fcvt_plugin::FilePrecision::NotTheFile && sizeof(Scalarm) == sizeof(float))
+        logInfo(QString("FCVT input: the layer's single-precision coordinates ('%1' differs from the layer: edited "
+                        "since it was read?); the command line, reading the file, may give another mesh")
+                    .arg(layer.fullName()));
     if (flipped > 0)
         logWarning(QString("FCVT input: flipped %1 zero-area triangles of '%2' into their neighbours (a fan "
                            "over a polygon's straight corner; removing them would tear the surface)")

@@ -2,10 +2,12 @@
 
 #include <vcg/complex/allocate.h>
 
+#include <cctype>
 #include <string>
 #include <vector>
 
 #include "errors.h"
+#include "mesh_io.h"
 #include "triangulate.h"
 
 namespace fcvt_plugin {
@@ -48,6 +50,29 @@ fieldcvt::TriMesh toSurfaceMesh(const CMeshO& in, int& flipped)
     fieldcvt::TriMesh out = toTriMesh(in);
     flipped = fieldcvt::flipZeroAreaTriangles(out);
     return out;
+}
+
+FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMesh& mesh)
+{
+    std::string ext = path.size() > 4 ? path.substr(path.size() - 4) : std::string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".ply" && ext != ".obj" && ext != ".off") return FilePrecision::NoFile;
+    fieldcvt::TriMesh file;
+    try {
+        file = fieldcvt::readMesh(path);
+    } catch (const std::exception&) {
+        return FilePrecision::NoFile;  // gone, unreadable: the layer is what there is
+    }
+    if (file.vertices.size() != mesh.vertices.size()) return FilePrecision::NotTheFile;
+    bool finer = false;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const fieldcvt::Vec3& exact = file.vertices[v];
+        if (exact.cast<Scalarm>().cast<double>() != mesh.vertices[v]) return FilePrecision::NotTheFile;
+        finer = finer || exact != mesh.vertices[v];
+    }
+    if (!finer) return FilePrecision::Same;
+    mesh.vertices = std::move(file.vertices);
+    return FilePrecision::Restored;
 }
 
 void fromTriMesh(const fieldcvt::TriMesh& mesh, CMeshO& out)

@@ -5,6 +5,8 @@
 
 #include "mesh.h"
 
+#include <string>
+
 namespace fcvt_plugin {
 
 //! Copies the live (non-deleted) vertices and faces of `in`, with compact indices, in the
@@ -18,6 +20,20 @@ fieldcvt::TriMesh toTriMesh(const CMeshO& in);
 //! those and tear the surface open, so they are flipped into their neighbours instead
 //! (fieldcvt::flipZeroAreaTriangles; vertices unchanged). `flipped` counts them.
 fieldcvt::TriMesh toSurfaceMesh(const CMeshO& in, int& flipped);
+
+//! What fullPrecisionCoordinates did.
+enum class FilePrecision {
+    Restored,    //!< the file's double coordinates replaced the layer's float ones
+    Same,        //!< the file holds nothing finer than the layer (float coordinates)
+    NotTheFile,  //!< the layer differs from its file (edited since, or read otherwise)
+    NoFile,      //!< no file, or not one the core's readers take (PLY, OBJ, OFF)
+};
+
+//! MeshLab keeps coordinates in single precision; a file may hold doubles, which the command
+//! line reads whole. When `path` (the layer's file) has exactly the layer's vertices once rounded
+//! to float, in the same order, their double coordinates replace `mesh`'s (toTriMesh of the
+//! layer): the filter then computes on the surface the CLI computes on, and gives its result.
+FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMesh& mesh);
 
 //! Replaces the content of `out` with `mesh` (float coordinates, vertex/face order kept).
 //! Bounding box and normals are left to the caller (MeshModel::UpdateBoxAndNormals).

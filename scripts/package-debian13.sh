@@ -40,7 +40,7 @@ in_root() { bash "$here/scripts/debian13-chroot.sh" "$root" --bind "$here" --bin
 
 packages=(
   build-essential cmake pkg-config dpkg-dev xz-utils
-  libeigen3-dev liblbfgspp-dev libnanoflann-dev
+  libeigen3-dev liblbfgspp-dev libnanoflann-dev libcgal-dev
   qtbase5-dev libqt5opengl5-dev libglew-dev libglu1-mesa-dev
   meshlab xvfb xauth x11-apps x11-utils
   # meshlab's Recommends that its own plugins link (an ordinary apt install brings them):
@@ -67,6 +67,18 @@ if [ "${FCVT_DEBIAN13_FRESH:-0}" = 1 ] || [ ! -e "$root/.fcvt-ready" ]; then
     tail -n 30 "$build/debian13-apt.log" >&2; echo "package-debian13: apt-get install failed in the root" >&2; exit 1; }
   step_done
   touch "$root/.fcvt-ready"
+fi
+# A root made by an earlier version of this list gets what the list has gained since.
+missing=()
+for p in "${packages[@]}"; do
+  in_root dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  step "apt-get install ${missing[*]} in the root"
+  in_root apt-get update -qq
+  in_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >>"$build/debian13-apt.log" 2>&1 || {
+    tail -n 30 "$build/debian13-apt.log" >&2; echo "package-debian13: apt-get install failed in the root" >&2; exit 1; }
+  step_done
 fi
 echo "MeshLab in the root: $(in_root dpkg-query -W -f='${Version}' meshlab)"
 

@@ -36,6 +36,12 @@ add_test(NAME meshlab_field_scaled
 add_test(NAME meshlab_missing_rosy
   COMMAND bash "${_fcvt_ml_dir}/missing_rosy.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/missing_rosy")
+if(TARGET fcvt)
+  add_test(NAME meshlab_filter_equals_cli
+    COMMAND bash "${_fcvt_ml_dir}/filter_equals_cli.sh" "${PROJECT_SOURCE_DIR}"
+            "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/filter_equals_cli" "$<TARGET_FILE:fcvt>")
+  set_tests_properties(meshlab_filter_equals_cli PROPERTIES LABELS meshlab TIMEOUT 600)
+endif()
 add_test(NAME meshlab_far_coordinates
   COMMAND bash "${_fcvt_ml_dir}/far_coordinates.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/far_coordinates")
