@@ -70,7 +70,9 @@ int runConvert(const std::vector<std::string>& args)
     for (const std::string& warning : readInfo.warnings) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
     if (!quiet) {
         for (const std::string& note : readInfo.notes) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
-        for (const std::string& note : check.notes)
+        std::vector<std::string> checkLines = check.information;
+        checkLines.insert(checkLines.end(), check.notes.begin(), check.notes.end());
+        for (const std::string& note : checkLines)
             std::fprintf(stderr, "fcvt: warning: %s: not repaired, convert writes the mesh as read (remesh would have: %s)\n",
                          inPath.c_str(), note.c_str());
         std::printf("%s: %d vertices, %d faces (from %s)\n", outPath.c_str(), input.vertexCount(), input.faceCount(),

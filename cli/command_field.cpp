@@ -92,6 +92,7 @@ int runField(const std::vector<std::string>& args)
     } catch (const InvalidInputError& e) {
         throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
     }
+    for (const std::string& note : cleaning.information) warnings.push_back(inPath + ": " + note);
     for (const std::string& note : cleaning.notes) warnings.push_back(inPath + ": " + note);
 
     const std::vector<Singularity> singularities = findSingularities(work, field);

@@ -223,6 +223,7 @@ int runRemesh(const std::vector<std::string>& args)
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
     std::vector<std::string> notes;
     for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
+    notes.insert(notes.end(), result.notes.begin(), result.notes.end());
     // The output's topology and mean edge length are only printed or reported.
     const bool described = !quiet || a.has("report");
     const TopologySummary outputTopology = described ? computeTopology(result.mesh) : TopologySummary{};
@@ -240,6 +241,7 @@ int runRemesh(const std::vector<std::string>& args)
         nlohmann::ordered_json field = fieldJson(params.fieldSource, result.singularities);
         // The core computes a field only when it is used (lambda > 0 and FCVT iterations).
         field["computed"] = !result.outputDirections.empty() || !result.singularities.empty();
+        if (field["computed"]) field["mesh"] = fieldMeshDescription(result);
         const nlohmann::ordered_json report = {{"input_file", inPath},
                                                {"output_file", outPath},
                                                {"vertices", result.mesh.vertexCount()},

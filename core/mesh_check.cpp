@@ -189,9 +189,9 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     for (const Face& t : faces) clean.faces.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
 
     if (report.mergedDuplicateVertices > 0)
-        report.notes.push_back("merged " + std::to_string(report.mergedDuplicateVertices) + " duplicate vertices (same coordinates)");
+        report.information.push_back("merged " + std::to_string(report.mergedDuplicateVertices) + " duplicate vertices (same coordinates)");
     if (report.removedUnreferencedVertices > 0)
-        report.notes.push_back("removed " + std::to_string(report.removedUnreferencedVertices) + " unreferenced vertices");
+        report.information.push_back("removed " + std::to_string(report.removedUnreferencedVertices) + " unreferenced vertices");
     if (report.removedDegenerateFaces > 0)
         report.notes.push_back("removed " + std::to_string(report.removedDegenerateFaces) + " degenerate (zero-area) faces");
     if (report.removedDuplicateFaces > 0)
@@ -209,7 +209,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
         std::ostringstream s;
         s << "the mesh has " << report.components << " connected components (kept; the smallest has "
           << std::setprecision(3) << (total > 0 ? 100.0 * smallest / total : 0.0) << " % of the area)";
-        report.notes.push_back(s.str());
+        report.information.push_back(s.str());
     }
     return clean;
 }

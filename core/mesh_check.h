@@ -19,7 +19,9 @@ struct InputReport {
     int addedVertexCopies = 0;           //!< copies added by those splits (one per fan after the first)
     int components = 0;                  //!< connected components of the clean mesh (through shared edges)
     std::vector<double> componentAreas;  //!< per component (ordered by first face), in input units
-    std::vector<std::string> notes;      //!< one human-readable line per repair
+    std::vector<std::string> notes;      //!< one human-readable line per repair that changed the surface
+    //! One line per change nobody sees (unreferenced vertices, exact duplicates, components kept).
+    std::vector<std::string> information;
     //! Per input vertex: its index in the clean mesh, -1 if removed. A merged duplicate maps to
     //! the vertex it was merged into; a split vertex to the copy of its first fan (the fan of its
     //! first face in input order).

@@ -93,6 +93,14 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
     if (p.valence.borderWeight < 1) throw InvalidInputError("valence optimisation border weight must be >= 1");
 }
 
+std::string fieldMeshDescription(const RemeshResult& result)
+{
+    const int faces = result.optimisationFaces;
+    if (faces < result.inputTopology.faces)
+        return "the optimisation surface, a simplified copy of the input (" + std::to_string(faces) + " faces)";
+    return "the input (" + std::to_string(faces) + " faces)";
+}
+
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
 {
     checkRemeshParams(params);

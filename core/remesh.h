@@ -165,6 +165,7 @@ struct ParameterNames {
 //! one line naming the parameter as `names` says, its range and the value given.
 void checkRemeshParams(const RemeshParams& params, const ParameterNames& names = {});
 
+
 //! Energies after one L-BFGS step (an evaluation that lowered E_tot) or one Lloyd step.
 struct EnergyRecord {
     std::string phase;  //!< "lloyd", "cvt" or "fcvt"
@@ -187,6 +188,11 @@ struct RemeshResult {
     TopologySummary inputTopology;       //!< genus / boundary loops / components of the input
     TopologySummary outputTopology;      //!< the same for the output
     std::vector<std::string> warnings;   //!< e.g. topology not recovered, solver restarts
+    //! The first inputWarnings of `warnings` are the input check's and the repair's (the stage
+    //! that ran first), for a log in stage order.
+    int inputWarnings = 0;
+    //! Information: what changed nothing a user sees (unreferenced vertices removed, ...).
+    std::vector<std::string> notes;
     std::vector<EnergyRecord> energyHistory;  //!< convergence (paper Fig. 8)
     //! The field interpolated at the output vertices (empty for a pure CVT without a field).
     std::vector<Vec3> outputNormals, outputDirections;
@@ -199,6 +205,11 @@ struct RemeshResult {
     //! copy's (RemeshParams::optimisationFacesPerSample).
     int optimisationFaces = 0;
 };
+
+//! The mesh remesh() computed the field and its singularities on, for a log or report next to
+//! them: "the input (N faces)" or "the optimisation surface, a simplified copy of the input (N
+//! faces)". `fcvt field` and the field filter compute on the input: the figures agree there.
+std::string fieldMeshDescription(const RemeshResult& result);
 
 //! The paper's fixed schedule (§5: 65 L-BFGS iterations on E_CVT, then 65 with E_field) after
 //! the 30 Lloyd steps FCVT ran before the short default (RemeshParams::lloydIterations).

@@ -207,6 +207,8 @@ void prepareSurface(RemeshRun& run)
                                         : prepareInput(run.input, report);
         run.cleanIndex = report.cleanIndex;
         run.result.warnings.insert(run.result.warnings.end(), report.notes.begin(), report.notes.end());
+        run.result.inputWarnings = static_cast<int>(run.result.warnings.size());
+        run.result.notes = report.information;
         run.frame = workingFrame(run.surface, run.sampleCount);
         for (Vec3& p : run.surface.vertices) p = run.frame.toWork(p);
     });

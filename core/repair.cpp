@@ -425,8 +425,11 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     auto note = [&](int count, const std::string& text) {
         if (count > 0) report.notes.push_back("repair: " + std::to_string(count) + " " + text);
     };
-    note(report.removedUnreferencedVertices, "unreferenced vertices removed");
-    note(report.mergedDuplicateVertices, "vertices merged with another at the same coordinates");
+    auto inform = [&](int count, const std::string& text) {
+        if (count > 0) report.information.push_back("repair: " + std::to_string(count) + " " + text);
+    };
+    inform(report.removedUnreferencedVertices, "unreferenced vertices removed");
+    inform(report.mergedDuplicateVertices, "vertices merged with another at the same coordinates");
     {
         std::ostringstream s;
         s << std::setprecision(3) << report.weldDistance << " (" << params.weldTolerance << " x the mean edge length)";
@@ -466,6 +469,7 @@ TriMesh repairAndPrepare(const TriMesh& input, const RepairParams& params, Repai
         if (repair.vertexMap[v] >= 0) cleanIndex[v] = report.cleanIndex[size_t(repair.vertexMap[v])];
     report.cleanIndex = std::move(cleanIndex);
     report.notes.insert(report.notes.begin(), repair.notes.begin(), repair.notes.end());
+    report.information.insert(report.information.begin(), repair.information.begin(), repair.information.end());
     return clean;
 }
 

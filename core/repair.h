@@ -63,7 +63,10 @@ struct RepairReport {
     double droppedAreaFraction = 0;   //!< their share of the total area
     int keptSmallComponents = 0;      //!< too small for the budget but over keepAreaFraction
     bool skipped = false;             //!< bad indices or coordinates: left to the strict check
-    std::vector<std::string> notes;   //!< one line per step that changed something
+    std::vector<std::string> notes;   //!< one line per step that changed the surface (warnings)
+    //! One line per step that changed nothing a user sees (unreferenced vertices removed, exact
+    //! duplicates merged): information, not warnings.
+    std::vector<std::string> information;
     //! Per input vertex: its index in the repaired mesh, -1 if removed.
     std::vector<int> vertexMap;
 };

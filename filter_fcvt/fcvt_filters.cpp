@@ -337,7 +337,10 @@ private:
     [[noreturn]] bool fail(const QString& message) { throw FilterFailure(message); }
     //! The current layer if it holds faces; otherwise fails.
     MeshModel* currentTriangleLayer(MeshDocument& md);
-    void logReport(const fieldcvt::RemeshResult& result, const QString& layerName);
+    //! The run's lines in the order its stages ran: repair, field, optimisation, valence, the
+    //! new layer and its figures, the times.
+    void logReport(const fieldcvt::RemeshResult& result, const fieldcvt::RemeshParams& run, const QString& layerName,
+                   const QString& inputName);
 
     //! Log lines (info / warning, shown red in the GUI) through plainLogText(), so that MeshLab's
     //! HTML log shows all of their text.
@@ -838,6 +841,7 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     // as it was; a failure while filling it removes it again.
     const QString layerName = outputLayerName(input->label());
     MeshModel* output = md.addNewMesh("", layerName, true);
+    std::vector<QString> outputLines;  // logged after the run's own lines, in stage order
     try {
         fcvt_plugin::fromTriMesh(result.mesh, output->cm);
         if (!result.outputDirections.empty()) {
@@ -873,13 +877,13 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
             throw fieldcvt::Error("input vertex count changed during the filter");
         transferVertexData(in, inVerts, keep, output->cm);
         if (keep.colour || keep.quality)
-            logInfo(QString("FCVT: per-vertex %1 of '%2' transferred to the output by closest point")
-                    .arg(keep.colour && keep.quality ? "colour and quality"
-                                                     : keep.colour ? "colour" : "quality")
-                    .arg(input->label()));
+            outputLines.push_back(QString("FCVT: per-vertex %1 of '%2' transferred to the output by closest point")
+                                      .arg(keep.colour && keep.quality ? "colour and quality"
+                                                                       : keep.colour ? "colour" : "quality")
+                                      .arg(input->label()));
         if (inputs.colorIrregular)
-            logInfo(("FCVT valence colours on '" + output->label() + "': " +
-                 applyValenceColours(result.mesh, *output)));
+            outputLines.push_back("FCVT valence colours on '" + output->label() + "': " +
+                                  applyValenceColours(result.mesh, *output));
     } catch (...) {
         removeLayer(md, output);
         md.setCurrentMesh(input->id());
@@ -887,37 +891,8 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     }
     if (cb != nullptr)
         cb(100, "FCVT done");
-    logReport(result, output->label());
-    if (run.density == fieldcvt::DensitySource::Curvature)
-        logInfo(QString("FCVT density: from curvature, gradation %1").arg(num(run.gradation)));
-    else if (run.density == fieldcvt::DensitySource::PerVertex)
-        logInfo(QString("FCVT density: from the per-vertex quality of '%1'").arg(input->label()));
-    if (run.valenceOptimization) {
-        const fieldcvt::ValenceStats& v = result.valence;
-        logInfo(QString("FCVT valence optimisation: V6% %1 before, %2 after; %3 flips, %4 collapses, %5 splits in %6 rounds")
-                .arg(num(v.v6Before))
-                .arg(num(v.v6After))
-                .arg(v.flips)
-                .arg(v.collapses)
-                .arg(v.splits)
-                .arg(v.rounds));
-    } else {
-        logInfo("FCVT valence optimisation: off");
-    }
-    logInfo(run.repair ? QString("FCVT repair: %1 (the counts are in the warnings)")
-                             .arg(result.repair.notes.empty() ? "nothing to repair" : "done")
-                       : QString("FCVT repair: off (strict input check)"));
-    logInfo(QString("FCVT size: mean edge length %1 (%2 vertices)")
-            .arg(num(meanEdgeLength(result.mesh)))
-            .arg(result.mesh.vertexCount()));
-    if (result.outputDirections.empty())
-        logInfo("FCVT field: none (lambda = 0 or no FCVT iterations)");
-    else
-        logInfo(QString("FCVT field: %1; on the input %2; stored at the output vertices as the "
-                    "per-vertex attribute '%3'")
-                .arg(kFieldSources[fieldSourceIndex(run.fieldSource)].label)
-                .arg(singularitySummary(result.singularities, result.inputTopology))
-                .arg(kRosyAttribute));
+    logReport(result, run, output->label(), input->label());
+    for (const QString& line : outputLines) logInfo(line);
     return true;
 }
 
@@ -1089,33 +1064,27 @@ void FilterRun::logWarning(const QString& line)
     log_.warning(plainLogText(line));
 }
 
-void FilterRun::logReport(const fieldcvt::RemeshResult& r, const QString& layerName)
+void FilterRun::logReport(const fieldcvt::RemeshResult& r, const fieldcvt::RemeshParams& run, const QString& layerName,
+                          const QString& inputName)
 {
-    const fieldcvt::QualityMetrics& m = r.metrics;
-    logInfo(QString("FCVT: new layer '%1': %2 vertices, %3 faces, %4 energy evaluations")
-            .arg(layerName)
-            .arg(r.mesh.vertexCount())
-            .arg(r.mesh.faceCount())
-            .arg(r.evaluations));
-    // The boundary figures only where there is a boundary (a closed output has none to measure).
-    const QString boundary =
-        r.outputTopology.boundaryLoops > 0 || r.inputTopology.boundaryLoops > 0
-            ? QString(", d_boundary %1 (of the input diagonal), boundary vertices of valence 4: %2%")
-                  .arg(num(m.dBoundary))
-                  .arg(num(m.boundaryV4Pct))
-            : QString();
-    logInfo(QString("FCVT metrics: %1, d_RMS %2, d_H %3 (fractions of the input diagonal)%4")
-            .arg(qualityText(m))
-            .arg(num(m.dRms))
-            .arg(num(m.dH))
-            .arg(boundary));
-    QString times = "FCVT times:";
-    for (const fieldcvt::StageTime& t : r.stageTimes)
-        times += QString(" %1 %2 s,").arg(QString::fromStdString(t.stage)).arg(num(t.seconds, 3));
-    times += QString(" total %1 s").arg(num(r.totalSeconds, 3));
-    logInfo(times);
-    logInfo(QString("FCVT topology: input %1; output %2")
-            .arg(topologyText(r.inputTopology), topologyText(r.outputTopology)));
+    // In the order the stages ran: input (repair), field, optimisation, valence, result, times.
+    for (const std::string& n : r.notes) logInfo(QString::fromStdString("FCVT note: " + n));
+    for (int i = 0; i < r.inputWarnings && i < static_cast<int>(r.warnings.size()); ++i)
+        logWarning(QString::fromStdString("FCVT warning: " + r.warnings[size_t(i)]));
+    logInfo(run.repair ? QString("FCVT repair: %1").arg(r.repair.notes.empty() && r.repair.information.empty() ? "nothing to repair" : "done")
+                       : QString("FCVT repair: off (strict input check)"));
+    if (r.outputDirections.empty())
+        logInfo("FCVT field: none (lambda = 0 or no FCVT iterations)");
+    else
+        logInfo(QString("FCVT field: %1; on %2: %3; stored at the output vertices as the per-vertex attribute '%4'")
+                    .arg(kFieldSources[fieldSourceIndex(run.fieldSource)].label)
+                    .arg(QString::fromStdString(fieldcvt::fieldMeshDescription(r)))
+                    .arg(singularitySummary(r.singularities, r.inputTopology))
+                    .arg(kRosyAttribute));
+    if (run.density == fieldcvt::DensitySource::Curvature)
+        logInfo(QString("FCVT density: from curvature, gradation %1").arg(num(run.gradation)));
+    else if (run.density == fieldcvt::DensitySource::PerVertex)
+        logInfo(QString("FCVT density: from the per-vertex quality of '%1'").arg(inputName));
     // E_CVT and E_field at the end of each phase (the last record of each).
     QString energies;
     for (size_t i = 0; i < r.energyHistory.size(); ++i) {
@@ -1130,10 +1099,51 @@ void FilterRun::logReport(const fieldcvt::RemeshResult& r, const QString& layerN
     }
     if (!energies.isEmpty())
         logInfo("FCVT energy at the end of each phase: " + energies);
-    for (const std::string& w : r.warnings)
-        logWarning(QString::fromStdString("FCVT warning: " + w));
+    if (run.valenceOptimization) {
+        const fieldcvt::ValenceStats& v = r.valence;
+        logInfo(QString("FCVT valence optimisation: V6% %1 before, %2 after; %3 flips, %4 collapses, %5 splits in %6 rounds")
+                    .arg(num(v.v6Before))
+                    .arg(num(v.v6After))
+                    .arg(v.flips)
+                    .arg(v.collapses)
+                    .arg(v.splits)
+                    .arg(v.rounds));
+    } else {
+        logInfo("FCVT valence optimisation: off");
+    }
+    for (size_t i = size_t(std::max(0, r.inputWarnings)); i < r.warnings.size(); ++i)
+        logWarning(QString::fromStdString("FCVT warning: " + r.warnings[i]));
+    const fieldcvt::QualityMetrics& m = r.metrics;
+    logInfo(QString("FCVT: new layer '%1': %2 vertices, %3 faces, %4 energy evaluations")
+                .arg(layerName)
+                .arg(r.mesh.vertexCount())
+                .arg(r.mesh.faceCount())
+                .arg(r.evaluations));
+    // The boundary figures only where there is a boundary (a closed output has none to measure).
+    const QString boundary =
+        r.outputTopology.boundaryLoops > 0 || r.inputTopology.boundaryLoops > 0
+            ? QString(", d_boundary %1 (of the input diagonal), boundary vertices of valence 4: %2%")
+                  .arg(num(m.dBoundary))
+                  .arg(num(m.boundaryV4Pct))
+            : QString();
+    // The distances' sampling is said: the quality report filter samples more densely.
+    const QString samples = run.distanceSamples > 0 ? QString("%1 random points per mesh").arg(run.distanceSamples)
+                                                    : QString("20 random points per face");
+    logInfo(QString("FCVT metrics: %1, d_RMS %2, d_H %3 (fractions of the input diagonal; %4, with every vertex and "
+                    "face centroid)%5")
+                .arg(qualityText(m))
+                .arg(num(m.dRms))
+                .arg(num(m.dH))
+                .arg(samples)
+                .arg(boundary));
+    logInfo(QString("FCVT topology: input %1; output %2").arg(topologyText(r.inputTopology), topologyText(r.outputTopology)));
+    logInfo(QString("FCVT size: mean edge length %1 (%2 vertices)").arg(num(meanEdgeLength(r.mesh))).arg(r.mesh.vertexCount()));
+    QString times = "FCVT times:";
+    for (const fieldcvt::StageTime& t : r.stageTimes)
+        times += QString(" %1 %2 s,").arg(QString::fromStdString(t.stage)).arg(num(t.seconds, 3));
+    times += QString(" total %1 s").arg(num(r.totalSeconds, 3));
+    logInfo(times);
 }
-
 
 }  // namespace
 }  // namespace fcvt_plugin

@@ -34,9 +34,9 @@ if(TARGET fcvt)
   set(_d13_cli "$<TARGET_FILE:fcvt>")
 endif()
 foreach(_t plugin_loads remesh_torus invalid_parameter field_torus missing_rosy field_then_remesh
-           colour_transfer quality_report invalid_new_parameters filter_equals_cli)
+           colour_transfer quality_report invalid_new_parameters filter_equals_cli log_order)
   set(_extra "")
-  if(_t STREQUAL "remesh_torus" OR _t STREQUAL "filter_equals_cli")
+  if(_t STREQUAL "remesh_torus" OR _t STREQUAL "filter_equals_cli" OR _t STREQUAL "log_order")
     set(_extra ${_d13_cli})
   endif()
   add_test(NAME debian13_meshlab_${_t}

@@ -62,7 +62,7 @@ grep -q "FCVT: new layer 'bunny_FCVT(1)':" "$log" || fail "the rerun's output is
 [ "$(grep -c "^LOG: 2 FCVT valence optimisation:" "$log.err")" -eq 2 ] || fail "not one valence line per run"
 grep -q "FCVT valence optimisation: V6% [0-9.]* before, [0-9.]* after; " "$log" || fail "no valence figures"
 [ "$(grep -c "^LOG: 2 FCVT density: from curvature, gradation 1" "$log.err")" -eq 1 ] || fail "the curvature density is not logged once"
-grep -Eq "FCVT field: extrinsic 6-RoSy; on the input [0-9]+ singularities, index sum -?[0-9]+ \(indices in sixths of a turn; with 5 boundary loops it need not be 6 x the Euler characteristic \(6 x -3 = -18\)\)" "$log" \
+grep -Eq "FCVT field: extrinsic 6-RoSy; on (the input|the optimisation surface, a simplified copy of the input) \([0-9]+ faces\): [0-9]+ singularities, index sum -?[0-9]+ \(indices in sixths of a turn; with 5 boundary loops it need not be 6 x the Euler characteristic \(6 x -3 = -18\)\)" "$log" \
   || fail "the index sum is not explained"
 grep -Eq "FCVT metrics: .*, d_boundary [0-9.e-]+ \(of the input diagonal\), boundary vertices of valence 4: [0-9.]+%" "$log" \
   || fail "no boundary figures for the bunny"

@@ -136,7 +136,7 @@ def meshlab_checks(source, plugin, work, fcvt):
             check(expected in log, "%s: no %r in the log" % (name, expected))
             # The counts of the CLI's report, in the log's warnings (MeshLab's float coordinates
             # may make a near seam exact: the two welding counts are summed).
-            said = dict((m.group(2), int(m.group(1))) for m in re.finditer(r"FCVT warning: repair: (\d+) ([a-z -]+)", log))
+            said = dict((m.group(2), int(m.group(1))) for m in re.finditer(r"FCVT (?:warning|note): repair: (\d+) ([a-z -]+)", log))
             total = lambda *words: sum(v for k, v in said.items() if any(k.startswith(w) for w in words))
             if "non_manifold_edges" in counts:
                 check(total("non-manifold edges") == counts["non_manifold_edges"], "%s: log counts %r" % (name, said))
