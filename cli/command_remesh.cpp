@@ -69,7 +69,8 @@ void printUsage()
         "  --gradation G         with --adaptive curvature: how strongly curvature raises the density,\n"
         "                        >= 0, 0 = uniform (default %g)\n"
         "  --seed S              seed of the sampling and the field, >= 0 (default %llu); same seed, same output\n"
-        "  --threads T           OpenMP threads, >= 0 (default %d: all cores); output does not depend on it\n"
+        "  --threads T           OpenMP threads, >= 0 (default %d: one per core that no other task holds\n"
+        "                        as the run starts); output does not depend on it\n"
         "  --time-limit SEC      stop optimising after SEC seconds and write the best result so far,\n"
         "                        with a warning (default 0: no limit)\n"
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
@@ -248,6 +249,7 @@ int runRemesh(const std::vector<std::string>& args)
                                                {"faces", result.mesh.faceCount()},
                                                {"mean_edge_length", meanEdge},
                                                {"evaluations", result.evaluations},
+                                               {"threads_used", result.threads},
                                                {"optimisation_faces", result.optimisationFaces},
                                                {"time_s", times},
                                                {"metrics", metricsJson(result.metrics)},

@@ -3,10 +3,8 @@
 #include "arguments.h"
 #include "commands.h"
 #include "errors.h"
-#include "wait_policy.h"
 
 #include <malloc.h>
-#include <sched.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -66,35 +64,16 @@ int run(const std::vector<std::string>& args)
     throw UsageError("unknown command '" + command + "' (try 'fcvt --help')");
 }
 
-//! The settings the C library and libgomp read as they load, before main: set here, then the
-//! same program runs again (a variable the user set is kept).
-//! - GLIBC_TUNABLES=glibc.malloc.hugetlb=1: the heap in transparent huge pages where the kernel
-//!   offers them on request (Debian's default, "madvise"): bunny 5000 11 400 -> 2 800 minor page
-//!   faults; whole commands, medians of 7 alternating (issue 12, 2 threads): mask 4000 1.07 ->
-//!   0.94 s, fandisk 5000 1.13 -> 1.03 s, fertility 7000 1.21 -> 1.10 s, bunny 5000 1.27 ->
-//!   1.23 s, nefertiti 10000 2.16 -> 2.11 s, torus 1000 the same.
-//! - How idle OpenMP threads wait. On a machine with a free core per thread they spin up to
-//!   libgomp's default count (GOMP_SPINCOUNT 300 000), then sleep: a sleeping thread takes ~0.2 ms
-//!   to wake on these virtual machines, at every parallel region and barrier (medians of 7 / 5:
-//!   torus 1000 0.31 s sleeping against 0.28 s spinning, bunny 5000 1.38 against 1.30-1.33 s).
-//!   Where other tasks are runnable as the command starts (5 looks, 1 ms apart) they sleep at once
-//!   (OMP_WAIT_POLICY=PASSIVE, spin count 0): a spinning thread holds its core while the one with
-//!   work waits for a time slice at every barrier (the same machine with one busy process beside:
-//!   torus 0.38 s sleeping against 0.58-1.07 s spinning, bunny 2.2 against 2.9-4.8 s; in an
-//!   earlier, busier run torus 3.4 against 14.8 s). The outputs are the same bytes either way.
-void chooseRuntimeSettings(int argc, char** argv)
+//! The heap in transparent huge pages where the kernel offers them on request (Debian's default,
+//! "madvise"): glibc reads GLIBC_TUNABLES=glibc.malloc.hugetlb=1 only as it loads, so it is set
+//! here and the same program runs again (a GLIBC_TUNABLES the user set is kept). Measured
+//! (issue 12, whole commands, medians of 7, 2 threads): mask 4000 1.07 -> 0.94 s, fandisk 5000
+//! 1.13 -> 1.03 s, bunny 5000 11 400 -> 2 800 minor page faults. How idle OpenMP threads wait is
+//! decided in-process by the core for the CLI and the MeshLab filter alike (thread_budget.h).
+void chooseHeapSettings(char** argv)
 {
-    using namespace fieldcvt::cli;
-    bool changed = false;
-    if (!std::getenv("GLIBC_TUNABLES")) changed = setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0;
-    if (!std::getenv("OMP_WAIT_POLICY") && !std::getenv("GOMP_SPINCOUNT")) {
-        cpu_set_t set;
-        const int cores = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 1;
-        const bool spin = threadsMaySpinNow(requestedThreads(argc, argv, cores), cores);
-        // The spin count written out (libgomp's default) so that the run below does not decide again.
-        changed = (spin ? setenv("GOMP_SPINCOUNT", "300000", 1) : setenv("OMP_WAIT_POLICY", "PASSIVE", 1)) == 0 || changed;
-    }
-    if (changed) execv("/proc/self/exe", argv);  // returns only on failure: go on as we are
+    if (std::getenv("GLIBC_TUNABLES")) return;
+    if (setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0) execv("/proc/self/exe", argv);  // returns only on failure
 }
 
 //! The heap grows and shrinks by 64 MB at a time instead of glibc's 128 kB: the optimisation
@@ -109,7 +88,7 @@ void keepHeapPadding() { mallopt(M_TOP_PAD, 64 << 20); }
 
 int main(int argc, char** argv)
 {
-    chooseRuntimeSettings(argc, argv);
+    chooseHeapSettings(argv);
     keepHeapPadding();
     try {
         return run(std::vector<std::string>(argv + 1, argv + argc));

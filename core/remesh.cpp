@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "remesh_stages.h"
+#include "thread_budget.h"
 
 #include <omp.h>
 
@@ -12,14 +13,11 @@ namespace fieldcvt {
 
 namespace {
 
-//! The OpenMP thread count of a run (RemeshParams::threads, 0 = as it is), restored after it:
-//! the caller's process (MeshLab's) keeps its own setting.
+//! The OpenMP thread count of a run, restored after it: the caller's process (MeshLab's) keeps
+//! its own setting.
 class ThreadCountScope {
 public:
-    explicit ThreadCountScope(int threads) : restore_(omp_get_max_threads())
-    {
-        if (threads > 0) omp_set_num_threads(threads);
-    }
+    explicit ThreadCountScope(int threads) : restore_(omp_get_max_threads()) { omp_set_num_threads(threads); }
     ~ThreadCountScope() { omp_set_num_threads(restore_); }
     ThreadCountScope(const ThreadCountScope&) = delete;
     ThreadCountScope& operator=(const ThreadCountScope&) = delete;
@@ -104,8 +102,10 @@ std::string fieldMeshDescription(const RemeshResult& result)
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
 {
     checkRemeshParams(params);
-    const ThreadCountScope threads(params.threads);
+    const int threadCount = threadsForThisMachine(params.threads);
+    const ThreadCountScope threads(threadCount);
     RemeshResult result;
+    result.threads = threadCount;
     RemeshRun run(input, params, progress, result);
     prepareSurface(run);
     findFeatureLines(run);

@@ -92,7 +92,7 @@ struct RemeshParams {
     //! lattice's phase (LatticeParams::seed) and the field's random initial directions.
     bool latticeStart = true;
     std::uint64_t seed = 1;        //!< seed of the initial sampling and of the field
-    int threads = 0;               //!< OpenMP threads, 0 = runtime default
+    int threads = 0;               //!< OpenMP threads, 0 = one per core that no other task holds (thread_budget.h)
     //! Wall-clock budget of the optimisation (Lloyd, CVT, FCVT) in seconds, 0 = none. When it
     //! runs out, the output is made from the best samples so far and a warning says so.
     double timeLimitSeconds = 0;
@@ -191,6 +191,9 @@ struct RemeshResult {
     //! The first inputWarnings of `warnings` are the input check's and the repair's (the stage
     //! that ran first), for a log in stage order.
     int inputWarnings = 0;
+    //! The OpenMP threads the run took (RemeshParams::threads, or for 0 the cores no other
+    //! task held as it started: thread_budget.h).
+    int threads = 0;
     //! Information: what changed nothing a user sees (unreferenced vertices removed, ...).
     std::vector<std::string> notes;
     std::vector<EnergyRecord> energyHistory;  //!< convergence (paper Fig. 8)

@@ -1138,7 +1138,7 @@ void FilterRun::logReport(const fieldcvt::RemeshResult& r, const fieldcvt::Remes
                 .arg(boundary));
     logInfo(QString("FCVT topology: input %1; output %2").arg(topologyText(r.inputTopology), topologyText(r.outputTopology)));
     logInfo(QString("FCVT size: mean edge length %1 (%2 vertices)").arg(num(meanEdgeLength(r.mesh))).arg(r.mesh.vertexCount()));
-    QString times = "FCVT times:";
+    QString times = QString("FCVT times (%1 thread%2):").arg(r.threads).arg(r.threads == 1 ? "" : "s");
     for (const fieldcvt::StageTime& t : r.stageTimes)
         times += QString(" %1 %2 s,").arg(QString::fromStdString(t.stage)).arg(num(t.seconds, 3));
     times += QString(" total %1 s").arg(num(r.totalSeconds, 3));

@@ -42,7 +42,7 @@ if not any(level == 2 and "FCVT note: repair: 1113 unreferenced vertices removed
     problems.append("no note on the 1113 unreferenced vertices")
 # 5. Order: the first line of each stage, in the order the stages ran.
 stages = ["FCVT input:", "FCVT repair:", "FCVT field:", "FCVT energy at the end", "FCVT valence optimisation:",
-          "FCVT: new layer", "FCVT metrics:", "FCVT times:"]
+          "FCVT: new layer", "FCVT metrics:", "FCVT times ("]
 first = [next((i for i, (_, t) in enumerate(remesh) if t.startswith(s)), None) for s in stages]
 if None in first or first != sorted(first):
     problems.append("stages out of order: %r" % list(zip(stages, first)))

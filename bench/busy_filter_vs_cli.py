@@ -1,0 +1,75 @@
+"""The MeshLab filter against the CLI on a busy machine (issue 38 item 2): the same remeshing
+(resources/bunny.ply, 5000 vertices, the filter's defaults) with 0, 1 and 2 busy loops beside it,
+the filter in meshlabserver (the staged plugin, under xvfb-run) and the CLI's `fcvt remesh`, one
+after the other, medians of --repeat runs. Times are the remeshing itself: the filter's logged
+total ("FCVT times (...): ... total T s") and the sum of the CLI report's stages (read and write
+left out), so that MeshLab's start-up and file I/O are not counted.
+
+  python3 bench/busy_filter_vs_cli.py BUILD_DIR [--repeat 3] [--busy 0 1 2]
+"""
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+a = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+a.add_argument("build")
+a.add_argument("--repeat", type=int, default=3)
+a.add_argument("--busy", type=int, nargs="+", default=[0, 1, 2])
+a.add_argument("--vertices", type=int, default=5000)
+args = a.parse_args()
+fcvt = os.path.join(args.build, "cli", "fcvt")
+plugin = os.path.join(args.build, "filter_fcvt", "libfilter_fcvt.so")
+work = tempfile.mkdtemp(prefix="fcvt-busy-")
+subprocess.run(["bash", os.path.join(here, "scripts", "stage-meshlab.sh"), os.path.join(work, "stage"), plugin],
+               check=True, stdout=subprocess.DEVNULL)
+server = os.path.join(work, "stage", "bin", "meshlabserver")
+source = os.path.join(here, "resources", "bunny.ply")
+mlx = os.path.join(work, "remesh.mlx")
+with open(os.path.join(here, "resources", "fcvt-remesh.mlx")) as fh:
+    text = re.sub(r'(name="vertexCount"[^>]*value=")[^"]*"', r'\g<1>%d"' % args.vertices, fh.read())
+with open(mlx, "w") as fh:
+    fh.write(text)
+env = {k: v for k, v in os.environ.items() if "OMP" not in k}
+
+
+def cli_run():
+    report = os.path.join(work, "cli.json")
+    subprocess.run([fcvt, "remesh", source, os.path.join(work, "cli.ply"), "--vertices", str(args.vertices), "--quiet",
+                    "--report", report], check=True, env=env, stderr=subprocess.DEVNULL)
+    r = json.load(open(report))
+    return sum(v for k, v in r["time_s"].items() if k not in ("read", "write", "total")), r["threads_used"]
+
+
+def filter_run():
+    p = subprocess.run(["xvfb-run", "-a", server, "-i", source, "-o", os.path.join(work, "filter.ply"), "-s", mlx],
+                       env=env, capture_output=True, text=True)
+    m = re.search(r"FCVT times \((\d+) threads?\):.* total ([0-9.e+-]+) s", p.stdout + p.stderr)
+    if p.returncode != 0 or not m:
+        sys.exit("meshlabserver failed:\n" + p.stderr[-2000:])
+    return float(m.group(2)), int(m.group(1))
+
+
+print(f"# bunny.ply -> {args.vertices} vertices, {len(os.sched_getaffinity(0))} cores, medians of {args.repeat}")
+print("| busy loops | CLI s | filter s | filter / CLI | threads CLI / filter |")
+print("|---|---|---|---|---|")
+for k in args.busy:
+    loops = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(k)]
+    try:
+        time.sleep(0.3)
+        cli, filt = [], []
+        for _ in range(args.repeat):  # alternating
+            cli.append(cli_run())
+            filt.append(filter_run())
+    finally:
+        for p in loops:
+            p.kill()
+            p.wait()
+    c, f = statistics.median(t for t, _ in cli), statistics.median(t for t, _ in filt)
+    print(f"| {k} | {c:.2f} | {f:.2f} | {f / c:.2f} | {cli[-1][1]} / {filt[-1][1]} |")
