@@ -6,10 +6,10 @@
 
 #include "errors.h"
 #include "field.h"
+#include "field_of_input.h"
 #include "mesh_check.h"
 #include "mesh_io.h"
 #include "metrics.h"
-#include "working_frame.h"
 
 #include <chrono>
 #include <cstdio>
@@ -72,30 +72,20 @@ int runField(const std::vector<std::string>& args)
     for (const std::string& warning : readInfo.warnings) warnings.push_back(inPath + ": " + warning);
     for (const std::string& note : readInfo.notes) warnings.push_back(inPath + ": " + note);
 
-    InputReport cleaning;
-    TriMesh mesh, work;
-    DirectionField field;
+    InputField computed;
     try {
-        mesh = prepareInput(input, cleaning);
-        // As remesh does: computed on the surface centred and scaled to unit cells (one per
-        // vertex), so the model's size does not matter; the directions are the same in both.
-        work = inFrame(mesh, workingFrame(mesh, mesh.vertexCount()));
-        if (params.source == FieldSource::User) {
-            const std::vector<Vec3>& vectors = userField(inPath, inputAttributes);
-            std::vector<Vec3> clean(mesh.vertices.size(), Vec3::Zero());
-            for (std::size_t v = 0; v < vectors.size() && v < cleaning.cleanIndex.size(); ++v)
-                if (cleaning.cleanIndex[v] >= 0) clean[cleaning.cleanIndex[v]] = vectors[v];
-            field = fieldFromVectors(work, clean, params.seed);
-        } else {
-            field = computeField(work, params);
-        }
+        const std::vector<Vec3>* vectors = params.source == FieldSource::User ? &userField(inPath, inputAttributes) : nullptr;
+        computed = fieldOfInput(input, params, vectors);
     } catch (const InvalidInputError& e) {
         throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
     }
+    const InputReport& cleaning = computed.report;
+    const TriMesh& mesh = computed.clean;
+    const DirectionField& field = computed.field;
     for (const std::string& note : cleaning.information) warnings.push_back(inPath + ": " + note);
     for (const std::string& note : cleaning.notes) warnings.push_back(inPath + ": " + note);
 
-    const std::vector<Singularity> singularities = findSingularities(work, field);
+    const std::vector<Singularity>& singularities = computed.singularities;
     VertexAttributes attributes;
     attributes.normals = field.normals;
     attributes.rosy = field.directions;

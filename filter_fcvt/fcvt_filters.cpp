@@ -18,6 +18,7 @@
 
 #include "closest_point.h"
 #include "errors.h"
+#include "field_of_input.h"
 #include "field.h"
 #include "field_drawing.h"
 #include "log_text.h"
@@ -907,26 +908,17 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
     if (cb != nullptr)
         cb(0, "checking the input");
     const fieldcvt::TriMesh in = surfaceOf(*input);
-    fieldcvt::InputReport report;
-    const fieldcvt::TriMesh clean = fieldcvt::prepareInput(in, report);
-    if (report.cleanIndex.size() != in.vertices.size())
-        throw fieldcvt::Error("the input check returned " + std::to_string(report.cleanIndex.size()) +
-                              " vertex indices for " + std::to_string(in.vertices.size()) +
-                              " vertices");
     if (cb != nullptr)
         cb(10, "computing the 6-RoSy field");
-    // As the remeshing does: on the surface centred and scaled to unit cells (one per vertex).
-    const fieldcvt::TriMesh work =
-        fieldcvt::inFrame(clean, fieldcvt::workingFrame(clean, clean.vertexCount()));
-    const fieldcvt::DirectionField field = fieldcvt::computeField(work, params);
-    if (field.directions.size() != clean.vertices.size())
-        throw fieldcvt::Error("the field has " + std::to_string(field.directions.size()) +
-                              " directions for " + std::to_string(clean.vertices.size()) +
-                              " vertices");
-    if (cb != nullptr)
-        cb(80, "finding singularities");
-    const std::vector<fieldcvt::Singularity> singularities =
-        fieldcvt::findSingularities(work, field);
+    // As `fcvt field` and the remeshing do: on the surface centred and scaled to unit cells.
+    const fieldcvt::InputField computed = fieldcvt::fieldOfInput(in, params);
+    const fieldcvt::InputReport& report = computed.report;
+    const fieldcvt::TriMesh& clean = computed.clean;
+    const fieldcvt::DirectionField& field = computed.field;
+    if (report.cleanIndex.size() != in.vertices.size() || field.directions.size() != clean.vertices.size())
+        throw fieldcvt::Error("the field has " + std::to_string(field.directions.size()) + " directions for " +
+                              std::to_string(clean.vertices.size()) + " vertices");
+    const std::vector<fieldcvt::Singularity>& singularities = computed.singularities;
 
     // Everything is computed: now change the document. The drawing layer is removed again if
     // filling it fails; the attribute is written last.
