@@ -31,6 +31,29 @@ void BM_TriangulateLobedPolygon(benchmark::State& state)
 }
 BENCHMARK(BM_TriangulateLobedPolygon)->Arg(1000)->Arg(10000)->Arg(100000)
     ->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oNLogN);
+// A strip wound 10 times (two arms of N / 2 corners, 1 apart, 0.5 wide): long thin channels,
+// the case ear clipping is slowest on and where a sweep's monotone pieces are many.
+void BM_TriangulateSpiralPolygon(benchmark::State& state)
+{
+    const int arm = static_cast<int>(state.range(0)) / 2;
+    std::vector<Vec3> points;
+    for (int side = 0; side < 2; ++side)
+        for (int k = 0; k < arm; ++k) {
+            const int i = side ? arm - 1 - k : k;
+            const double a = 20 * M_PI * i / (arm - 1), r = (side ? 0.5 : 1.0) + a / (2 * M_PI);
+            points.push_back({r * std::cos(a), r * std::sin(a), 0});
+        }
+    std::vector<int> corners(points.size());
+    for (std::size_t i = 0; i < corners.size(); ++i) corners[i] = static_cast<int>(i);
+    std::vector<Face> faces;
+    for (auto _ : state) {
+        faces.clear();
+        benchmark::DoNotOptimize(triangulatePolygon(points, corners, faces));
+    }
+    state.SetComplexityN(state.range(0));
+}
+BENCHMARK(BM_TriangulateSpiralPolygon)->Arg(1000)->Arg(10000)->Arg(100000)
+    ->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oNLogN);
 // Small polygons (quads, hexagons: most polygon faces of files) on both sides of the threshold.
 BENCHMARK(BM_TriangulateLobedPolygon)->Name("BM_TriangulateSmallPolygon")->Arg(4)->Arg(8)->Arg(32)->Arg(64)->Arg(65)
     ->Unit(benchmark::kMicrosecond);

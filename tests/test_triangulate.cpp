@@ -173,6 +173,95 @@ TEST(Triangulate, SelfIntersectingPolygonsAreSaidAndStillTriangulated)
     EXPECT_EQ(faces.size(), star.size() - 2);
 }
 
+TEST(Triangulate, SpiralOfAHundredThousandCornersTriangulatesWithoutOverlap)
+{
+    // A strip wound 10 times (arms 1 apart, 0.5 wide): every corner sees only a thin channel.
+    constexpr int kArm = 50000;
+    constexpr double kTurns = 10;
+    std::vector<Vec3> spiral;
+    for (int i = 0; i < kArm; ++i) {
+        const double a = 2 * M_PI * kTurns * i / (kArm - 1), r = 1 + a / (2 * M_PI);
+        spiral.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+    for (int i = kArm - 1; i >= 0; --i) {
+        const double a = 2 * M_PI * kTurns * i / (kArm - 1), r = 0.5 + a / (2 * M_PI);
+        spiral.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+    ASSERT_GT(shoelace(spiral), 0);
+    expectSimpleTriangulation(spiral);
+}
+
+TEST(Triangulate, StraightCornersOfLargePolygonsMakeNoZeroAreaTriangle)
+{
+    // An L of 420 corners, most of them straight (70 along each of its six sides), and a comb's base
+    // with 50 straight corners between each pair of teeth.
+    std::vector<Vec3> l;
+    const Vec3 ends[6] = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+    for (int side = 0; side < 6; ++side)
+        for (int k = 0; k < 70; ++k) l.push_back(ends[side] + (ends[(side + 1) % 6] - ends[side]) * (k / 70.0));
+    expectSimpleTriangulation(l);  // reversed counts zero-area triangles too
+    std::vector<Vec3> comb{{-1, -1, 0}, {21, -1, 0}, {21, 0, 0}};
+    for (int t = 19; t >= 0; --t) {
+        for (const Vec3& c : {Vec3(t + 0.75, 0, 0), Vec3(t + 0.75, 10, 0), Vec3(t + 0.25, 10, 0), Vec3(t + 0.25, 0, 0)}) comb.push_back(c);
+        for (int k = 1; k < 50; ++k) comb.push_back({t + 0.25 - 0.5 * k / 50, 0, 0});
+    }
+    comb.push_back({-1, 0, 0});
+    expectSimpleTriangulation(comb);
+}
+
+TEST(Triangulate, CornersAreKeptByIndexEvenAtRepeatedPositions)
+{
+    // A 100-corner C whose corners are the second copies of an unwelded point list, in reverse
+    // storage order: the triangles name exactly the given indices.
+    const std::vector<Vec3> c = cShape(4);
+    const int n = static_cast<int>(c.size());
+    std::vector<Vec3> points(2 * n);
+    std::vector<int> corners(n);
+    for (int i = 0; i < n; ++i) {
+        points[n - 1 - i] = c[i];
+        points[2 * n - 1 - i] = c[i];
+        corners[i] = 2 * n - 1 - i;
+    }
+    for (int small : {0, 1}) {
+        std::vector<int> used = corners;
+        std::vector<Vec3> polygonPoints = c;
+        if (small) {  // the 32-gon by ear clipping too
+            const std::vector<Vec3> c32 = cShape();
+            used.assign(corners.begin(), corners.begin() + 32);
+            for (int i = 0; i < 32; ++i) points[used[i]] = c32[i];
+            polygonPoints = c32;
+        }
+        std::vector<Face> faces;
+        ASSERT_EQ(triangulatePolygon(points, used, faces), PolygonShape::Simple);
+        ASSERT_EQ(faces.size(), used.size() - 2);
+        double sum = 0;
+        std::vector<int> seen;
+        for (const Face& t : faces) {
+            for (int k : t) seen.push_back(k);
+            const double z = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).z();
+            EXPECT_GT(z, 0);
+            sum += 0.5 * z;
+        }
+        std::sort(seen.begin(), seen.end());
+        seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+        std::vector<int> expected = used;
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(seen, expected);
+        EXPECT_NEAR(sum, shoelace(polygonPoints), 1e-12);
+    }
+    // Two squares touching at a corner, written as one polygon through it twice (two indices at
+    // one position): not simple, yet every index is in a triangle and none is lost.
+    const std::vector<Vec3> pinched = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}, {1, 1, 0}, {0, 1, 0}};
+    std::vector<int> all(pinched.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    std::vector<Face> faces;
+    EXPECT_EQ(triangulatePolygon(pinched, all, faces), PolygonShape::NotSimple);
+    ASSERT_EQ(faces.size(), pinched.size() - 2);
+    std::vector<int> seen;
+    for (const Face& t : faces) seen.insert(seen.end(), t.begin(), t.end());
+    for (int i : all) EXPECT_NE(std::find(seen.begin(), seen.end(), i), seen.end()) << i;
+}
+
 TEST(Triangulate, FlipsRemoveZeroAreaFanTrianglesAndKeepTheSurfaceClosed)
 {
     // A cube whose faces are octagons (corners and edge midpoints), each fanned from its first

@@ -150,6 +150,42 @@ def polygon_cube(cells=2):
     return [v[k] for k in keep], [[index[c] for c in face] for face in f]
 
 
+
+def c_outline(step=20):
+    """Issue 30's C: an annulus cut open, outer radius 1, inner radius exactly 0.5, corners every
+    `step` degrees from 0 to 300, counter-clockwise. Its reflex corners lie on diagonals between
+    other corners (to rounding): inexact ear clipping folded it."""
+    outer = [(math.cos(math.radians(d)), math.sin(math.radians(d))) for d in range(0, 301, step)]
+    inner = [(0.5 * math.cos(math.radians(d)), 0.5 * math.sin(math.radians(d))) for d in range(300, -1, -step)]
+    return outer + inner
+
+
+def lobed_outline(n=300, lobes=6):
+    """n corners on a lobed curve, counter-clockwise: concave between the lobes (a fan folds it)."""
+    out = []
+    for i in range(n):
+        a = 2 * math.pi * i / n
+        r = 1 + 0.4 * math.cos(lobes * a)
+        out.append((r * math.cos(a), r * math.sin(a)))
+    return out
+
+
+def polygon_prism(outline, height=0.3):
+    """A closed prism over a counter-clockwise outline: its two caps single polygon faces, its
+    sides quads, oriented outward."""
+    n = len(outline)
+    v = [[x, y, 0.0] for x, y in outline] + [[x, y, height] for x, y in outline]
+    f = [list(range(n - 1, -1, -1)), list(range(n, 2 * n))]
+    f += [[i, (i + 1) % n, n + (i + 1) % n, n + i] for i in range(n)]
+    return v, f
+
+
+def polygon_prism_measures(outline, height=0.3):
+    """(surface area, volume) of polygon_prism(outline, height), from the outline's shoelace area."""
+    cap = 0.5 * sum(a[0] * b[1] - a[1] * b[0] for a, b in zip(outline, outline[1:] + outline[:1]))
+    perimeter = sum(math.dist(a, b) for a, b in zip(outline, outline[1:] + outline[:1]))
+    return 2 * cap + height * perimeter, cap * height
+
 def cone(apex, direction, k=10, apex_index=None, v=None, f=None):
     """Appends a closed cone (apex, ring of k, cap centre) to (v, f); returns them."""
     v = [] if v is None else v
@@ -408,6 +444,21 @@ def boundary_loops_and_components(mesh):
             parent[find(faces[0])] = find(other)
     return loops, len({find(i) for i in range(len(f))})
 
+
+
+def area_and_volume(mesh):
+    """(surface area, signed enclosed volume) of a mesh of triangles or polygons (fanned)."""
+    v, f = mesh
+    area = volume = 0.0
+    for t in f:
+        for k in range(1, len(t) - 1):
+            a, b, c = v[t[0]], v[t[k]], v[t[k + 1]]
+            u = [b[i] - a[i] for i in range(3)]
+            w = [c[i] - a[i] for i in range(3)]
+            n = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+            area += 0.5 * math.sqrt(sum(x * x for x in n))
+            volume += sum(a[i] * n[i] for i in range(3)) / 6
+    return area, volume
 
 def manifold_problems(mesh):
     """Why a mesh is not a valid manifold triangle mesh (empty list if it is one)."""

@@ -62,6 +62,12 @@ def run_case(fcvt, work, c, timeout):
                 if (loops, components) != (0, 1):
                     problems.append("output has %d boundary loops and %d components, expected one closed surface"
                                     % (loops, components))
+            if c["measures"]:
+                area, volume, tolerance = c["measures"]
+                got_area, got_volume = meshgen.area_and_volume(mesh)
+                if abs(got_area - area) > tolerance * area or abs(got_volume - volume) > tolerance * abs(volume):
+                    problems.append("output area %.5g and volume %.5g, expected %.5g and %.5g (within %g %%)"
+                                    % (got_area, got_volume, area, volume, 100 * tolerance))
         elif not os.path.getsize(out):
             problems.append("empty output file")
         if any(line.startswith("fcvt: error:") for line in lines):

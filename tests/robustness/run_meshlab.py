@@ -4,7 +4,7 @@ resources/fcvt-remesh.mlx (parameters set per case) on a staged MeshLab tree wit
 under xvfb-run. A failing filter must end meshlabserver through its own exit(-1) (status 255),
 never a signal or an abort (129-254), never a hang; no "Segmentation"/"Aborted" in stderr.
 A case expected to succeed must exit 0 and write its output; one expected to fail must not.
-Usage: run_meshlab.py SOURCE_DIR PLUGIN_SO WORK_DIR [--timeout S] [--jobs N]"""
+Usage: run_meshlab.py SOURCE_DIR PLUGIN_SO WORK_DIR [--timeout S] [--jobs N] [--only NAME,...]"""
 import argparse
 import concurrent.futures
 import os
@@ -84,6 +84,7 @@ def main():
     ap.add_argument("work")
     ap.add_argument("--timeout", type=float, default=120)
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--only", default="")
     a = ap.parse_args()
     os.makedirs(os.path.join(a.work, "in"), exist_ok=True)
     os.makedirs(os.path.join(a.work, "out"), exist_ok=True)
@@ -95,7 +96,7 @@ def main():
     server = stage.stdout.strip().splitlines()[-1]
     with open(os.path.join(a.source, "resources", "fcvt-remesh.mlx")) as fh:
         template = fh.read()
-    cases = [c for c in corpus.cases() if c["meshlab"]]
+    cases = [c for c in corpus.cases() if c["meshlab"] and (not a.only or c["name"] in a.only.split(","))]
     for c in cases:
         with open(os.path.join(a.work, "in", c["file"]), "wb") as fh:
             fh.write(c["data"])
