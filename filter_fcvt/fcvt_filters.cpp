@@ -349,7 +349,9 @@ private:
     void logWarning(const QString& line);
     //! The layer's mesh for remeshing or a field (fcvt_plugin::toSurfaceMesh), with the
     //! zero-area triangles it flipped logged.
-    fieldcvt::TriMesh surfaceOf(const MeshModel& layer);
+    //! The layer as the core's mesh, with its file's double coordinates when it is as read, and
+    //! the file's triangulation of polygons unless `keepFaces` (face selection in use).
+    fieldcvt::TriMesh surfaceOf(const MeshModel& layer, bool keepFaces = false);
 
     FilterLog& log_;
 };
@@ -711,12 +713,24 @@ MeshModel* FilterRun::currentTriangleLayer(MeshDocument& md)
     return input;
 }
 
-fieldcvt::TriMesh FilterRun::surfaceOf(const MeshModel& layer)
+fieldcvt::TriMesh FilterRun::surfaceOf(const MeshModel& layer, bool keepFaces)
 {
     int flipped = 0;
     fieldcvt::TriMesh mesh = fcvt_plugin::toSurfaceMesh(layer.cm, flipped);
-    // The coordinates the command line would read from the same file (the faces stay MeshLab's).
-    const fcvt_plugin::FilePrecision precision = fcvt_plugin::fullPrecisionCoordinates(layer.fullName().toStdString(), mesh);
+    // The coordinates the command line would read from the same file.
+    std::vector<fieldcvt::Face> fileFaces;
+    const fcvt_plugin::FilePrecision precision =
+        fcvt_plugin::fullPrecisionCoordinates(layer.fullName().toStdString(), mesh, &fileFaces);
+    // MeshLab's PLY importer fans polygons from their first corner, which folds concave ones (a C
+    // shape's cap came out at 1.6 times its area, a lobed one lost 512 of 1196 triangles): the
+    // readers' triangulation instead, when the layer is the file's (its vertices as read).
+    if (!keepFaces && !fileFaces.empty() && fileFaces != mesh.faces) {
+        mesh.faces = std::move(fileFaces);
+        flipped = 0;  // the readers' triangles have no zero-area fan triangle to flip
+        logInfo(QString("FCVT input: the polygons of '%1' triangulated as the command line does (MeshLab's fans "
+                        "fold concave polygons)")
+                    .arg(layer.fullName()));
+    }
     if (precision == fcvt_plugin::FilePrecision::Restored)
         logInfo(QString("FCVT input: the double-precision coordinates of '%1' (MeshLab holds them in single precision; "
                         "the layer is as it was read), as the command line reads them")
@@ -740,7 +754,7 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     if (input == nullptr)
         return false;
 
-    fieldcvt::TriMesh in = surfaceOf(*input);
+    fieldcvt::TriMesh in = surfaceOf(*input, inputs.featuresFromSelection);
     fieldcvt::RemeshParams run = params;
     run.outputInFloat = sizeof(Scalarm) == sizeof(float);  // the new layer's coordinates
     if (run.fieldSource == fieldcvt::FieldSource::User) {

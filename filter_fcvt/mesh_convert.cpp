@@ -52,14 +52,16 @@ fieldcvt::TriMesh toSurfaceMesh(const CMeshO& in, int& flipped)
     return out;
 }
 
-FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMesh& mesh)
+FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMesh& mesh, std::vector<fieldcvt::Face>* fileFaces)
 {
+    if (fileFaces != nullptr) fileFaces->clear();
     std::string ext = path.size() > 4 ? path.substr(path.size() - 4) : std::string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext != ".ply" && ext != ".obj" && ext != ".off") return FilePrecision::NoFile;
     fieldcvt::TriMesh file;
+    fieldcvt::MeshReadInfo info;
     try {
-        file = fieldcvt::readMesh(path);
+        file = fieldcvt::readMesh(path, &info);
     } catch (const std::exception&) {
         return FilePrecision::NoFile;  // gone, unreadable: the layer is what there is
     }
@@ -70,6 +72,7 @@ FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMes
         if (exact.cast<Scalarm>().cast<double>() != mesh.vertices[v]) return FilePrecision::NotTheFile;
         finer = finer || exact != mesh.vertices[v];
     }
+    if (fileFaces != nullptr && info.polygonsTriangulated > 0) *fileFaces = std::move(file.faces);
     if (!finer) return FilePrecision::Same;
     mesh.vertices = std::move(file.vertices);
     return FilePrecision::Restored;

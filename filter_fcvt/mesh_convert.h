@@ -33,7 +33,11 @@ enum class FilePrecision {
 //! line reads whole. When `path` (the layer's file) has exactly the layer's vertices once rounded
 //! to float, in the same order, their double coordinates replace `mesh`'s (toTriMesh of the
 //! layer): the filter then computes on the surface the CLI computes on, and gives its result.
-FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMesh& mesh);
+//! With `fileFaces`, a file of polygons gives its triangles there too (the readers' triangulation,
+//! where MeshLab's PLY importer fans them, folding concave ones, and loses some); empty when the
+//! file has triangles only or the layer is not the file's.
+FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMesh& mesh,
+                                       std::vector<fieldcvt::Face>* fileFaces = nullptr);
 
 //! Replaces the content of `out` with `mesh` (float coordinates, vertex/face order kept).
 //! Bounding box and normals are left to the caller (MeshModel::UpdateBoxAndNormals).
