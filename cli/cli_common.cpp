@@ -29,23 +29,6 @@ FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser
     return source;
 }
 
-void checkWritable(const std::string& path, const std::string& input)
-{
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw IOError(path + ": is a directory, not a file to write");
-    const bool existed = fs::exists(path, ec);
-    if (existed && fs::equivalent(path, input, ec))
-        throw IOError(path + ": is the input file " + input + "; choose another output (it would be overwritten)");
-    const fs::path parent = fs::path(path).parent_path();
-    if (!parent.empty() && !fs::is_directory(parent, ec))
-        throw IOError(path + ": cannot write: directory " + parent.string() + " does not exist");
-    std::FILE* probe = std::fopen(path.c_str(), "ab");  // append: an existing file keeps its bytes
-    if (probe == nullptr) throw IOError(path + ": cannot write: " + std::strerror(errno));
-    std::fclose(probe);
-    if (!existed) fs::remove(path, ec);
-}
-
 namespace {
 
 //! Where writing `path` would put the bytes: symbolic links followed (dangling ones too, which
@@ -63,15 +46,39 @@ std::filesystem::path writeTarget(std::filesystem::path path)
     return ec ? fs::absolute(path, ec).lexically_normal() : resolved;
 }
 
-}  // namespace
-
-void checkDistinctOutputs(const std::string& path, const std::string& other, const std::string& what)
+//! Whether `a` and `b` are one file, existing or not yet: the same inode, or the same place once
+//! links are followed and the path is made normal.
+bool sameFile(const std::string& a, const std::string& b)
 {
     namespace fs = std::filesystem;
     std::error_code ec;
-    const bool same = (fs::exists(path, ec) && fs::exists(other, ec) && fs::equivalent(path, other, ec)) ||
-                      writeTarget(path) == writeTarget(other);
-    if (same) throw IOError(path + ": is also the " + what + " " + other + "; choose another file (one would overwrite the other)");
+    if (fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec)) return true;
+    return writeTarget(a) == writeTarget(b);
+}
+
+}  // namespace
+
+void checkWritable(const std::string& path, const std::string& input)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw IOError(path + ": is a directory, not a file to write");
+    const bool existed = fs::exists(path, ec);
+    if (sameFile(path, input))
+        throw IOError(path + ": is the input file " + input + "; choose another output (it would be overwritten)");
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        throw IOError(path + ": cannot write: directory " + parent.string() + " does not exist");
+    std::FILE* probe = std::fopen(path.c_str(), "ab");  // append: an existing file keeps its bytes
+    if (probe == nullptr) throw IOError(path + ": cannot write: " + std::strerror(errno));
+    std::fclose(probe);
+    if (!existed) fs::remove(path, ec);
+}
+
+
+void checkDistinctOutputs(const std::string& path, const std::string& other, const std::string& what)
+{
+    if (sameFile(path, other)) throw IOError(path + ": is also the " + what + " " + other + "; choose another file (one would overwrite the other)");
 }
 
 void checkOutputPath(const std::string& path, const std::string& input)

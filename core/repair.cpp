@@ -4,11 +4,11 @@
 #include "errors.h"
 #include "mesh_edges.h"
 #include "surface_gluing.h"
+#include "triple_hash.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <iomanip>
 #include <numeric>
 #include <sstream>
@@ -19,27 +19,6 @@ namespace fieldcvt {
 namespace {
 
 int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
-
-std::uint64_t mix(std::uint64_t h, std::uint64_t x)
-{
-    h ^= x + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    return h;
-}
-
-struct TripleHash {
-    template <class T>
-    size_t operator()(const std::array<T, 3>& k) const
-    {
-        std::uint64_t h = 0;
-        for (const T& x : k) {
-            std::uint64_t bits = 0;
-            static_assert(sizeof(T) <= sizeof(bits), "8-byte keys");
-            std::memcpy(&bits, &x, sizeof(T));
-            h = mix(h, bits);
-        }
-        return size_t(h);
-    }
-};
 
 using Cell = std::array<std::int64_t, 3>;
 
@@ -299,21 +278,10 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
 
     // 4. Orientation: a breadth-first walk per component; a glued edge whose faces disagree
     // with the orientation reached so far is cut (the seam of a Moebius-like piece).
-    {
-        std::vector<char> cutIn;  // per component, whether it was cut
-        const Orientation orientation = orientByWalk(faces, partner, [&](int h) {
-            cut(h);
-            ++report.seamEdges;
-            cutIn.resize(size_t(faceCount), 0);
-            cutIn[size_t(h / 3)] = 1;  // marked on a face; counted per component below
-        });
-        if (!cutIn.empty()) {
-            std::vector<char> componentCut(size_t(orientation.components), 0);
-            for (int f = 0; f < faceCount; ++f)
-                if (cutIn[f]) componentCut[orientation.component[f]] = 1;
-            report.nonOrientableComponents = static_cast<int>(std::count(componentCut.begin(), componentCut.end(), 1));
-        }
-    }
+    report.nonOrientableComponents = orientByWalk(faces, partner, [&](int h) {
+                                         cut(h);
+                                         ++report.seamEdges;
+                                     }).nonOrientable;
 
     // 5. One vertex per fan of corners glued across edges. A face cut from faces that still
     // share both ends of the edge (a cut that splits neither end) is detached at one corner:

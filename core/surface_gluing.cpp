@@ -1,10 +1,9 @@
 #include "surface_gluing.h"
 
 #include "disjoint_sets.h"
+#include "triple_hash.h"
 
 #include <array>
-#include <cstdint>
-#include <cstring>
 #include <unordered_map>
 
 namespace fieldcvt {
@@ -12,19 +11,6 @@ namespace fieldcvt {
 namespace {
 
 int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
-
-struct PointHash {
-    size_t operator()(const std::array<double, 3>& p) const
-    {
-        std::uint64_t h = 0;
-        for (double x : p) {
-            std::uint64_t bits = 0;
-            std::memcpy(&bits, &x, sizeof bits);
-            h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-        }
-        return size_t(h);
-    }
-};
 
 }  // namespace
 
@@ -34,7 +20,7 @@ std::vector<int> exactDuplicateRepresentatives(const std::vector<Vec3>& points, 
     const int n = static_cast<int>(points.size());
     std::vector<int> rep(n);
     merged = 0;
-    std::unordered_map<std::array<double, 3>, int, PointHash> first;
+    std::unordered_map<std::array<double, 3>, int, TripleHash> first;
     first.reserve(size_t(n));
     for (int v = 0; v < n; ++v) {
         rep[v] = v;
@@ -69,6 +55,7 @@ Orientation orientByWalk(const std::vector<Face>& faces, const std::vector<int>&
     for (int start = 0; start < faceCount; ++start) {
         if (o.component[start] >= 0) continue;
         const int c = o.components++;
+        bool conflicted = false;
         o.component[start] = c;
         queue.assign(1, start);
         for (size_t head = 0; head < queue.size(); ++head) {
@@ -86,9 +73,11 @@ Orientation orientByWalk(const std::vector<Face>& faces, const std::vector<int>&
                     queue.push_back(g);
                 } else if (o.flip[g] != required) {
                     conflict(h);
+                    conflicted = true;
                 }
             }
         }
+        o.nonOrientable += conflicted;
     }
     return o;
 }

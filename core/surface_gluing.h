@@ -25,6 +25,7 @@ struct Orientation {
     std::vector<int> component;  //!< per face, its connected component (through glued half-edges)
     std::vector<char> flip;      //!< per face, reverse it to agree with its component's first face
     int components = 0;
+    int nonOrientable = 0;  //!< components in which the walk met a conflict
 };
 
 //! A breadth-first walk per component from its first face (kept as it is) over the glued

@@ -649,7 +649,7 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
                         .arg(parameterName(kAdaptive))
                         .arg(density));
     const double gradation = floatParam(par, kGradation, defaults.gradation);
-    params.gradation = gradation;  // checked even when unused: a script's typo is said
+    params.gradation = gradation;  // checked even when unused (the core reads it with curvature only)
     if (density == kDensityCurvature) params.density = fieldcvt::DensitySource::Curvature;
     // The core's one range check, in the dialog's names.
     fieldcvt::ParameterNames names;
@@ -664,7 +664,6 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
     } catch (const fieldcvt::InvalidInputError& e) {
         return fail(QString("FCVT: %1").arg(QString::fromStdString(e.what())));
     }
-    if (density != kDensityCurvature) params.gradation = defaults.gradation;
     RemeshInputs inputs;
     inputs.densityFromQuality = density == kDensityVertexQuality;
     inputs.featuresFromSelection = boolParam(par, kFeatureSelection, false);
@@ -929,9 +928,6 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
     const fieldcvt::InputReport& report = computed.report;
     const fieldcvt::TriMesh& clean = computed.clean;
     const fieldcvt::DirectionField& field = computed.field;
-    if (report.cleanIndex.size() != in.vertices.size() || field.directions.size() != clean.vertices.size())
-        throw fieldcvt::Error("the field has " + std::to_string(field.directions.size()) + " directions for " +
-                              std::to_string(clean.vertices.size()) + " vertices");
     const std::vector<fieldcvt::Singularity>& singularities = computed.singularities;
 
     // Everything is computed: now change the document. The drawing layer is removed again if

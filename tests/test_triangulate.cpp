@@ -12,17 +12,30 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 namespace fieldcvt {
 namespace {
 
+//! 0, 1, ..., n - 1: a polygon whose corners are the points in order.
+std::vector<int> allCorners(std::size_t n)
+{
+    std::vector<int> corners(n);
+    std::iota(corners.begin(), corners.end(), 0);
+    return corners;
+}
+
+//! The polygon through `points` in order, its triangles appended to `faces`.
+PolygonShape triangulateInOrder(const std::vector<Vec3>& points, std::vector<Face>& faces)
+{
+    return triangulatePolygon(points, allCorners(points.size()), faces);
+}
+
 std::vector<Face> triangulate(const std::vector<Vec3>& points)
 {
-    std::vector<int> corners(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) corners[i] = static_cast<int>(i);
     std::vector<Face> faces;
-    triangulatePolygon(points, corners, faces);
+    triangulateInOrder(points, faces);
     return faces;
 }
 
@@ -78,10 +91,8 @@ double shoelace(const std::vector<Vec3>& p)
 //! areas add up to the polygon's), every corner used.
 void expectSimpleTriangulation(const std::vector<Vec3>& points)
 {
-    std::vector<int> corners(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) corners[i] = static_cast<int>(i);
     std::vector<Face> faces;
-    ASSERT_EQ(triangulatePolygon(points, corners, faces), PolygonShape::Simple);
+    ASSERT_EQ(triangulateInOrder(points, faces), PolygonShape::Simple);
     ASSERT_EQ(faces.size(), points.size() - 2);
     double sum = 0;
     int reversed = 0;
@@ -156,20 +167,16 @@ TEST(Triangulate, SelfIntersectingPolygonsAreSaidAndStillTriangulated)
              {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}},                 // a bow tie
              {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0, 0}, {0, 2, 0}},      // a corner on another edge
              {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {0, 1, 0}}}) {   // a repeated corner
-        std::vector<int> corners(bad.size());
-        for (std::size_t i = 0; i < bad.size(); ++i) corners[i] = static_cast<int>(i);
         std::vector<Face> faces;
-        EXPECT_EQ(triangulatePolygon(bad, corners, faces), PolygonShape::NotSimple);
+        EXPECT_EQ(triangulateInOrder(bad, faces), PolygonShape::NotSimple);
         EXPECT_EQ(faces.size(), bad.size() - 2);
     }
     // Large: a star of 1000 corners whose last corner crosses to the other side.
     std::vector<Vec3> star;
     for (int i = 0; i < 1000; ++i) star.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000), 0});
     std::swap(star[10], star[500]);
-    std::vector<int> corners(star.size());
-    for (std::size_t i = 0; i < star.size(); ++i) corners[i] = static_cast<int>(i);
     std::vector<Face> faces;
-    EXPECT_EQ(triangulatePolygon(star, corners, faces), PolygonShape::NotSimple);
+    EXPECT_EQ(triangulateInOrder(star, faces), PolygonShape::NotSimple);
     EXPECT_EQ(faces.size(), star.size() - 2);
 }
 
@@ -252,8 +259,7 @@ TEST(Triangulate, CornersAreKeptByIndexEvenAtRepeatedPositions)
     // Two squares touching at a corner, written as one polygon through it twice (two indices at
     // one position): not simple, yet every index is in a triangle and none is lost.
     const std::vector<Vec3> pinched = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}, {1, 1, 0}, {0, 1, 0}};
-    std::vector<int> all(pinched.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    const std::vector<int> all = allCorners(pinched.size());
     std::vector<Face> faces;
     EXPECT_EQ(triangulatePolygon(pinched, all, faces), PolygonShape::NotSimple);
     ASSERT_EQ(faces.size(), pinched.size() - 2);

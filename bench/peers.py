@@ -1,0 +1,91 @@
+"""FCVT beside the peers of ../shared/anchors on the same inputs: Instant Meshes (N vertices), and
+the edge-length-driven pmp-library uniform_remeshing and CGAL isotropic_remeshing (one thread
+each, L = sqrt(2 A / (sqrt(3) N)) from the input's area A, 10 iterations, as that README gives).
+Whole commands, one after the other, medians of --repeat alternating rounds; every output
+measured by `fcvt metrics OUT --ref IN` (Q_avg / theta_min / %theta<30 / V6% / d_H % / loops).
+
+  python3 bench/peers.py BUILD/cli/fcvt [--threads 2] [--repeat 5] [MESH:N ...]
+"""
+import argparse
+import math
+import os
+import statistics
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from side_by_side import DEFAULT_ROWS, SHARED, metrics, off_to_obj, quality, timed  # noqa: E402
+
+ANCHORS = os.path.join(SHARED, "anchors")
+
+
+def obj_area(path):
+    v, area = [], 0.0
+    with open(path) as fh:
+        for line in fh:
+            t = line.split()
+            if not t:
+                continue
+            if t[0] == "v":
+                v.append([float(x) for x in t[1:4]])
+            elif t[0] == "f":
+                c = [v[int(x.split("/")[0]) - 1] for x in t[1:]]
+                for k in range(1, len(c) - 1):
+                    a = [c[k][i] - c[0][i] for i in range(3)]
+                    b = [c[k + 1][i] - c[0][i] for i in range(3)]
+                    area += 0.5 * math.sqrt((a[1] * b[2] - a[2] * b[1]) ** 2 + (a[2] * b[0] - a[0] * b[2]) ** 2
+                                            + (a[0] * b[1] - a[1] * b[0]) ** 2)
+    return area
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("fcvt")
+    ap.add_argument("rows", nargs="*")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--repeat", type=int, default=5)
+    a = ap.parse_args()
+    tools = {"IM": os.path.join(ANCHORS, "instant-meshes"), "pmp": os.path.join(ANCHORS, "pmp_remesh"),
+             "CGAL": os.path.join(ANCHORS, "cgal_remesh")}
+    tools = {k: p for k, p in tools.items() if os.access(p, os.X_OK)}
+    print(f"# FCVT {a.threads} threads; peers: {', '.join(tools) or 'none found'}; medians of {a.repeat}")
+    print("quality: Q_avg / θ_min / %θ<30° / V6% / d_H % / boundary loops (`fcvt metrics OUT --ref IN`); V: output vertices")
+    print()
+    head = "| mesh, N | FCVT s | " + " | ".join(f"{k} s | FCVT / {k}" for k in tools) + " | FCVT quality, V | "
+    head += " | ".join(f"{k} quality, V" for k in tools) + " |"
+    print(head)
+    print("|" + "---|" * (head.count("|") - 1))
+    with tempfile.TemporaryDirectory() as work:
+        for spec in a.rows or DEFAULT_ROWS:
+            path, n = spec.rsplit(":", 1)
+            if not os.path.exists(path):
+                path = os.path.join(SHARED, "meshes", path)
+            obj = path
+            if path.lower().endswith(".off"):
+                obj = os.path.join(work, "in.obj")
+                off_to_obj(path, obj)
+            length = math.sqrt(2 * obj_area(obj) / (math.sqrt(3) * int(n)))
+            out = {k: os.path.join(work, k + ".obj") for k in tools}
+            out["FCVT"] = os.path.join(work, "fcvt.ply")
+            cmds = {"FCVT": [a.fcvt, "remesh", path, out["FCVT"], "--vertices", n, "--threads", str(a.threads), "--quiet"]}
+            if "IM" in tools:
+                cmds["IM"] = [tools["IM"], obj, "-o", out["IM"], "-r", "6", "-p", "6", "-v", n, "-d", "-t", str(a.threads)]
+            for k in ("pmp", "CGAL"):
+                if k in tools:
+                    cmds[k] = [tools[k], obj, out[k], "%.9g" % length, "10"]
+            times = {k: [] for k in cmds}
+            for _ in range(a.repeat):
+                for k, cmd in cmds.items():
+                    times[k].append(timed(cmd)[0])
+            med = {k: statistics.median(t) for k, t in times.items()}
+            line = f"| {os.path.basename(path)} {n} | {med['FCVT']:.2f} | "
+            line += " | ".join(f"{med[k]:.2f} | {med['FCVT'] / med[k]:.2f}" for k in tools) + " | "
+            cells = []
+            for k in ["FCVT"] + list(tools):
+                m = metrics(a.fcvt, out[k], path)
+                cells.append(f"{quality(m)}, {int(m.get('vertices', 0))}")
+            print(line + " | ".join(cells) + " |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
