@@ -1,7 +1,9 @@
 #include "simplify.h"
 
+#include "editable_mesh.h"
 #include "errors.h"
 #include "mesh_edges.h"
+#include "triangle_shape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,14 +52,6 @@ struct Quadric {
     }
 };
 
-// Mean ratio 4√3 A / Σ|e|²: 1 for an equilateral triangle, 0 for a degenerate one.
-double meanRatio(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-    const double sum = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
-    if (!(sum > 0)) return 0;
-    return 2 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / sum;
-}
-
 //! A collapse that leaves a face this much worse than the worst face around the removed vertex,
 //! and worse than this, is refused (half-edge collapses on flat parts, where every quadric error
 //! is 0, would otherwise make long slivers).
@@ -93,50 +87,38 @@ struct Candidate {
 
 class Simplifier {
 public:
-    Simplifier(const TriMesh& input, const SimplifyParams& params) : params_(params), position_(input.vertices), faces_(input.faces)
+    Simplifier(const TriMesh& input, const SimplifyParams& params) : params_(params), mesh_(checked(input, params).vertices, input.faces)
     {
         const int n = input.vertexCount();
-        if (!params.locked.empty() && params.locked.size() != size_t(n))
-            throw InvalidInputError("simplify: the locked flags have " + std::to_string(params.locked.size()) + " entries for " +
-                                    std::to_string(n) + " vertices");
         locked_.assign(n, 0);
         for (int v = 0; v < n && !params.locked.empty(); ++v) locked_[v] = params.locked[v];
-        vertexFaces_.assign(n, {});
-        {
-            std::vector<int> degree(n, 0);
-            for (const Face& t : faces_)
-                for (int v : t) ++degree[v];
-            for (int v = 0; v < n; ++v) vertexFaces_[v].reserve(degree[v]);
-        }
         quadric_.assign(n, {});
-        faceAlive_.assign(faces_.size(), 1);
         version_.assign(n, 0);
-        for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
-            const Face& t = faces_[f];
-            const Vec3 normal = (position_[t[1]] - position_[t[0]]).cross(position_[t[2]] - position_[t[0]]);
+        for (int f = 0; f < mesh_.faceCount(); ++f) {
+            const Face& t = mesh_.face(f);
+            const Vec3 normal = (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0]));
             const double length = normal.norm();
             if (length > 0) {
-                const Quadric q = Quadric::plane(normal / length, position_[t[0]], 0.5 * length);
+                const Quadric q = Quadric::plane(normal / length, position(t[0]), 0.5 * length);
                 for (int v : t) quadric_[v] += q;
             }
-            for (int v : t) vertexFaces_[v].push_back(f);
         }
         // Vertices on a border edge (or on an edge of more than two faces) stay.
         const EdgeTable edges = buildEdgeTable(input);
         for (int e = 0; e < edges.edgeCount(); ++e)
             if (edges.faceCount(e) != 2) locked_[edges.ends[e][0]] = locked_[edges.ends[e][1]] = 1;
-        aliveFaces_ = static_cast<int>(faces_.size());
+        aliveFaces_ = mesh_.faceCount();
     }
 
     SimplifyResult run()
     {
-        const int n = static_cast<int>(position_.size());
+        const int n = mesh_.vertexCount();
         std::vector<int> ring;
         // Every edge's candidate first, then one heap made of them (linear time, against a
         // push per edge). The pops come in the same order: the order is total on (cost, from,
         // to), and the only ties, two entries for one edge, are a valid and a stale one.
         std::vector<Candidate> initial;
-        initial.reserve(3 * faces_.size() / 2 + 16);
+        initial.reserve(3 * size_t(mesh_.faceCount()) / 2 + 16);
         Candidate c;
         for (int v = 0; v < n; ++v) {
             neighbours(v, ring);
@@ -172,7 +154,16 @@ public:
     }
 
 private:
-    bool vertexAlive(int v) const { return !vertexFaces_[v].empty(); }
+    static const TriMesh& checked(const TriMesh& input, const SimplifyParams& params)
+    {
+        if (!params.locked.empty() && params.locked.size() != size_t(input.vertexCount()))
+            throw InvalidInputError("simplify: the locked flags have " + std::to_string(params.locked.size()) + " entries for " +
+                                    std::to_string(input.vertexCount()) + " vertices");
+        return input;
+    }
+    const Vec3& position(int v) const { return mesh_.position(v); }
+    //! A vertex is removed with its last face (an input vertex without faces is dropped too).
+    bool vertexAlive(int v) const { return !mesh_.facesOf(v).empty(); }
 
     //! Whether a heap entry still describes its edge: neither end has changed since it was made.
     //! The versions first (4 bytes a vertex, against a face list's 24): most stale entries fail
@@ -185,8 +176,8 @@ private:
     void neighbours(int v, std::vector<int>& out) const
     {
         out.clear();
-        for (int f : vertexFaces_[v])
-            for (int w : faces_[f])
+        for (int f : mesh_.facesOf(v))
+            for (int w : mesh_.face(f))
                 if (w != v) out.push_back(w);
         std::sort(out.begin(), out.end());
         out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -197,9 +188,9 @@ private:
     double cost(int from, int to, const Quadric& q) const
     {
         if (locked_[from]) return std::numeric_limits<double>::infinity();
-        const double error = q.error(position_[to]);
+        const double error = q.error(position(to));
         if (q.area > 0 && error > params_.maxError * params_.maxError * q.area) return std::numeric_limits<double>::infinity();
-        return error + kLengthWeight * q.area * (position_[from] - position_[to]).squaredNorm();
+        return error + kLengthWeight * q.area * (position(from) - position(to)).squaredNorm();
     }
 
     //! The cheaper direction of collapsing edge (u, w); false when neither is allowed.
@@ -230,9 +221,9 @@ private:
         // The two faces of edge (from, to) and their opposite corners.
         int shared = 0;
         int opposite[2] = {-1, -1};
-        for (int f : vertexFaces_[from]) {
-            const Face& t = faces_[f];
-            if (t[0] != to && t[1] != to && t[2] != to) continue;
+        for (int f : mesh_.facesOf(from)) {
+            const Face& t = mesh_.face(f);
+            if (!mesh_.hasCorner(f, to)) continue;
             if (shared == 2) return false;
             for (int v : t)
                 if (v != from && v != to) opposite[shared] = v;
@@ -255,23 +246,23 @@ private:
         if (common != 2) return false;
         // The opposite corners lose a face: keep at least three around each (no fins).
         for (int v : opposite)
-            if (vertexFaces_[v].size() < 4) return false;
+            if (mesh_.facesOf(v).size() < 4) return false;
         // The moved faces: no flip, no sharp turn, no new sliver.
         double worstBefore = 1;
-        for (int f : vertexFaces_[from]) {
-            const Face& t = faces_[f];
-            worstBefore = std::min(worstBefore, meanRatio(position_[t[0]], position_[t[1]], position_[t[2]]));
+        for (int f : mesh_.facesOf(from)) {
+            const Face& t = mesh_.face(f);
+            worstBefore = std::min(worstBefore, meanRatio(position(t[0]), position(t[1]), position(t[2])));
         }
-        for (int f : vertexFaces_[from]) {
-            Face t = faces_[f];
+        for (int f : mesh_.facesOf(from)) {
+            Face t = mesh_.face(f);
             if (t[0] == to || t[1] == to || t[2] == to) continue;
-            const Vec3 before = (position_[t[1]] - position_[t[0]]).cross(position_[t[2]] - position_[t[0]]);
+            const Vec3 before = (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0]));
             for (int& v : t)
                 if (v == from) v = to;
-            const Vec3 after = (position_[t[1]] - position_[t[0]]).cross(position_[t[2]] - position_[t[0]]);
+            const Vec3 after = (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0]));
             const double lengths = before.norm() * after.norm();
             if (!(lengths > 0) || before.dot(after) < kMinNormalCosine * lengths) return false;
-            const double ratio = meanRatio(position_[t[0]], position_[t[1]], position_[t[2]]);
+            const double ratio = meanRatio(position(t[0]), position(t[1]), position(t[2]));
             if (ratio < kMinMeanRatio && ratio < worstBefore * (1 - 1e-6)) return false;  // margin: equal shapes of a regular mesh
         }
         return true;
@@ -279,22 +270,14 @@ private:
 
     void collapse(int from, int to)
     {
-        std::vector<int> faces;
-        faces.swap(vertexFaces_[from]);
-        for (int f : faces) {
-            Face& t = faces_[f];
-            if (t[0] == to || t[1] == to || t[2] == to) {
-                faceAlive_[f] = 0;
+        // The two faces of the edge go, the others of `from` take `to` in its place.
+        faces_ = mesh_.facesOf(from);
+        for (int f : faces_) {
+            if (mesh_.hasCorner(f, to)) {
+                mesh_.killFace(f);
                 --aliveFaces_;
-                for (int v : t) {
-                    if (v == from) continue;
-                    auto& list = vertexFaces_[v];
-                    list.erase(std::find(list.begin(), list.end(), f));
-                }
             } else {
-                for (int& v : t)
-                    if (v == from) v = to;
-                vertexFaces_[to].push_back(f);
+                mesh_.renameCorner(f, from, to);
             }
         }
         quadric_[to] += quadric_[from];
@@ -305,32 +288,29 @@ private:
     SimplifyResult compact() const
     {
         SimplifyResult result;
-        const int n = static_cast<int>(position_.size());
+        const int n = mesh_.vertexCount();
         result.coarseVertex.assign(n, -1);
         for (int v = 0; v < n; ++v) {
             if (!vertexAlive(v)) continue;
             result.coarseVertex[v] = static_cast<int>(result.inputVertex.size());
             result.inputVertex.push_back(v);
-            result.mesh.vertices.push_back(position_[v]);
+            result.mesh.vertices.push_back(position(v));
         }
-        for (size_t f = 0; f < faces_.size(); ++f) {
-            if (!faceAlive_[f]) continue;
-            const Face& t = faces_[f];
+        for (int f = 0; f < mesh_.faceCount(); ++f) {
+            if (!mesh_.faceAlive(f)) continue;
+            const Face& t = mesh_.face(f);
             result.mesh.faces.push_back({result.coarseVertex[t[0]], result.coarseVertex[t[1]], result.coarseVertex[t[2]]});
         }
         return result;
     }
 
     const SimplifyParams& params_;
-    std::vector<Vec3> position_;
-    std::vector<Face> faces_;
-    std::vector<char> faceAlive_;
+    EditableMesh<> mesh_;  //!< collapses rename corners in place: a face keeps its index
     std::vector<char> locked_;
-    std::vector<std::vector<int>> vertexFaces_;
     std::vector<Quadric> quadric_;
     std::vector<std::uint32_t> version_;
     std::vector<Candidate> heap_;  //!< a binary min-heap (std::greater) of collapses, stale ones included
-    std::vector<int> ringFrom_, ringTo_;
+    std::vector<int> ringFrom_, ringTo_, faces_;
     int aliveFaces_ = 0;
 };
 
