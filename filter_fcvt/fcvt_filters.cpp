@@ -293,6 +293,12 @@ ParamDef RichAbsPerc(const char* name, float value, float min, float max, const 
     p.max = double(max);
     return p;
 }
+//! Marks a parameter few users change (ParamDef::advanced).
+ParamDef advanced(ParamDef p)
+{
+    p.advanced = true;
+    return p;
+}
 ParamDef RichMesh(const char* name, const MeshModel*, const MeshDocument*, const QString& label,
                   const QString& tooltip)
 {
@@ -384,14 +390,12 @@ QString filterInfo(FilterId filter)
 {
     switch (filter) {
     case kRemesh:
-        // Kept short: MeshLab shows this text above the parameters, and a long one pushed the
-        // last parameter out of the dialog's default size. The details are in the tooltips.
-        return "Isotropic remeshing into a new layer: a Centroidal Voronoi Tessellation restricted to "
-               "the surface, its edges aligned to a 6-RoSy direction field (Field weight &gt; 0), "
-               "then valence optimisation. Quality metrics and stage times go to the log. See "
-               "<b>\"Field-Aligned Isotropic Surface Remeshing\"</b>, Computer Graphics Forum. "
-               "<i>Repair the input</i> (on) first welds seams, removes duplicate faces and splits "
-               "non-manifold edges and non-orientable pieces (its tooltip says what, the log counts it).";
+        // Kept to three lines: MeshLab shows it above the parameters, and Qt gives the dialog at
+        // most 2/3 of the screen's height (682 pixels at 1280x1024), below which MeshLab 2020.09
+        // clips the last row. What each parameter does is in its tooltip (the Help button).
+        return "Isotropic remeshing into a new layer: a centroidal Voronoi tessellation of the "
+               "surface with edges aligned to a 6-RoSy field, then valence optimisation (<b>\"Field-"
+               "Aligned Isotropic Surface Remeshing\"</b>). Figures and times go to the log.";
     case kField:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "
@@ -511,10 +515,10 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                               "the surface bends (curvature, graded by Curvature gradation); or more "
                               "where the input's per-vertex quality is higher (every value must be "
                               "finite and above 0)."));
-        par.addParam(RichFloat(kGradation, float(defaults.gradation), parameterLabel(kGradation),
+        par.addParam(advanced(RichFloat(kGradation, float(defaults.gradation), parameterLabel(kGradation),
                                "With Vertex density 'curvature': how strongly curvature raises the "
                                "density (0 or more; 0 = uniform, 1 = edges up to about 3 times "
-                               "shorter where the surface bends most)."));
+                               "shorter where the surface bends most).")));
         par.addParam(RichFloat(kFeatureAngle, float(defaults.featureAngleDegrees),
                                parameterLabel(kFeatureAngle),
                                "Input edges whose faces meet at a dihedral angle of at least this "
@@ -525,29 +529,29 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                               "After the extraction, edge flips, collapses and splits that bring "
                               "vertices to valence 6 (4 on boundaries), then a relaxation that "
                               "realigns the edges (paper section 4.4)."));
-        par.addParam(RichBool(kColorIrregular, false, parameterLabel(kColorIrregular),
+        par.addParam(advanced(RichBool(kColorIrregular, false, parameterLabel(kColorIrregular),
                               "Colour the output's vertices by valence: blue below 6 (4 on a "
                               "boundary), pink above, white at it. Replaces the colour carried "
-                              "over from the input."));
-        par.addParam(RichFloat(kLambda, float(defaults.lambda), parameterLabel(kLambda),
+                              "over from the input.")));
+        par.addParam(advanced(RichFloat(kLambda, float(defaults.lambda), parameterLabel(kLambda),
                                "Weight of the field-alignment energy; 0 gives a pure isotropic "
-                               "CVT."));
-        par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.fieldSource),
+                               "CVT.")));
+        par.addParam(advanced(RichEnum(kFieldSource, fieldSourceIndex(defaults.fieldSource),
                               fieldSourceLabels(kAllFieldSources), parameterLabel(kFieldSource),
                               "The 6-RoSy field the edges are aligned to: the extrinsically smooth "
                               "field, the max or min principal-curvature direction, or the "
-                              "per-vertex Point3 attribute 'rosy' of the input layer."));
-        par.addParam(RichInt(kSeed, int(defaults.seed), parameterLabel(kSeed),
+                              "per-vertex Point3 attribute 'rosy' of the input layer.")));
+        par.addParam(advanced(RichInt(kSeed, int(defaults.seed), parameterLabel(kSeed),
                              "Seed of the initial sampling (0 or more); the same seed gives the same "
-                             "output."));
-        par.addParam(RichInt(kCvtIterations, defaults.cvtIterations, parameterLabel(kCvtIterations),
-                             "L-BFGS iterations on the CVT energy (the paper uses 130)."));
-        par.addParam(RichInt(kFcvtIterations, defaults.fcvtIterations, parameterLabel(kFcvtIterations),
+                             "output.")));
+        par.addParam(advanced(RichInt(kCvtIterations, defaults.cvtIterations, parameterLabel(kCvtIterations),
+                             "L-BFGS iterations on the CVT energy (the paper uses 130).")));
+        par.addParam(advanced(RichInt(kFcvtIterations, defaults.fcvtIterations, parameterLabel(kFcvtIterations),
                              "L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
-                             "iterations."));
-        par.addParam(RichBool(kFeatureSelection, false, parameterLabel(kFeatureSelection),
+                             "iterations.")));
+        par.addParam(advanced(RichBool(kFeatureSelection, false, parameterLabel(kFeatureSelection),
                               "Also treat the border of the input's face selection (edges between a "
-                              "selected and an unselected face) as feature lines."));
+                              "selected and an unselected face) as feature lines.")));
         // Added after issue 15's reordering (issue 17): at the end, like every new parameter.
         par.addParam(RichBool(kRepair, defaults.repair, parameterLabel(kRepair),
                               "Before remeshing, weld coincident and nearly coincident border "

@@ -68,6 +68,10 @@ struct ParamDef {
     double min = 0, max = 0;  //!< AbsPerc: the range of the absolute value
     QStringList enumLabels;   //!< Enum: the labels (index = the value in .mlx scripts)
     QString label, tooltip;
+    //! Few users change it: MeshLab 2022.02 and later show it only after the dialog's "Show
+    //! advanced" button, which keeps the dialog on a 768-pixel screen. MeshLab 2020.09 has no
+    //! such button and shows every row.
+    bool advanced = false;
 };
 
 //! The parameters of `filter`, in their declaration (= .mlx) order. `current` (may be null: no

@@ -42,7 +42,7 @@ packages=(
   build-essential cmake pkg-config dpkg-dev xz-utils
   libeigen3-dev liblbfgspp-dev libnanoflann-dev libcgal-dev
   qtbase5-dev libqt5opengl5-dev libglew-dev libglu1-mesa-dev
-  meshlab xvfb xauth x11-apps x11-utils
+  meshlab xvfb xauth x11-apps x11-utils xdotool
   # meshlab's Recommends that its own plugins link (an ordinary apt install brings them):
   # without them MeshLab skips filter_func ("Conditional Face Selection"), filter_qhull, ...
   lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 libxerces-c3.2t64

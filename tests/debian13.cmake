@@ -24,7 +24,8 @@ set_tests_properties(debian13_deb_installs PROPERTIES LABELS "debian13;package" 
   RESOURCE_LOCK debian13_root)
 add_test(NAME debian13_plugin_symbols COMMAND bash "${_d13}/symbols.sh" ${_d13_args})
 add_test(NAME debian13_gui COMMAND bash "${_d13}/gui.sh" ${_d13_args} "${CMAKE_CURRENT_BINARY_DIR}/debian13/gui")
-set(_d13_tests debian13_plugin_symbols debian13_gui)
+add_test(NAME debian13_gui_dialog COMMAND bash "${_d13}/gui_dialog.sh" ${_d13_args} "${CMAKE_CURRENT_BINARY_DIR}/debian13/gui_dialog")
+set(_d13_tests debian13_plugin_symbols debian13_gui debian13_gui_dialog)
 
 # The meshlabserver tests of tests/meshlab/, against MeshLab 2022.02 (tests/meshlab/common.sh,
 # FCVT_MESHLAB_HOST). compare_isotropic is left out: it drives MeshLab's built-in filters, and

@@ -21,20 +21,20 @@ RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& def
     for (const ParamDef& p : defs) {
         switch (p.type) {
         case ParamDef::Int:
-            list.addParam(RichInt(p.name, int(p.value), p.label, p.tooltip));
+            list.addParam(RichInt(p.name, int(p.value), p.label, p.tooltip, p.advanced));
             break;
         case ParamDef::Float:
-            list.addParam(RichFloat(p.name, Scalarm(p.value), p.label, p.tooltip));
+            list.addParam(RichFloat(p.name, Scalarm(p.value), p.label, p.tooltip, p.advanced));
             break;
         case ParamDef::Bool:
-            list.addParam(RichBool(p.name, p.value != 0, p.label, p.tooltip));
+            list.addParam(RichBool(p.name, p.value != 0, p.label, p.tooltip, p.advanced));
             break;
         case ParamDef::Enum:
-            list.addParam(RichEnum(p.name, int(p.value), p.enumLabels, p.label, p.tooltip));
+            list.addParam(RichEnum(p.name, int(p.value), p.enumLabels, p.label, p.tooltip, p.advanced));
             break;
         case ParamDef::AbsPerc:
             list.addParam(RichAbsPerc(p.name, Scalarm(p.value), Scalarm(p.min), Scalarm(p.max),
-                                      p.label, p.tooltip));
+                                      p.label, p.tooltip, p.advanced));
             break;
         case ParamDef::Mesh:
             // The default is the current layer (the measured layer itself: no distances).

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# debian13_gui_dialog (issue 38): MeshLab 2022.02's remeshing dialog, opened with the filter
+# search (Ctrl+F) in the GUI under Xvfb inside the Debian 13 root, fits a 1366 x 768 screen
+# and a 1280 x 1024 one: the dialog is entirely on the screen and no taller than Qt lets a
+# window grow by itself (2/3 of the screen), where MeshLab would clip its last row. The
+# parameters few users change are behind MeshLab's "advanced" button (ParamDef::advanced).
+# A screenshot of each dialog is left in WORK_DIR for a look.
+# Usage: gui_dialog.sh BUILD_DIR SOURCE_DIR WORK_DIR
+set -euo pipefail
+BUILD="$1"; SOURCE="$2"; work="$3"
+source "$SOURCE/tests/debian13/common.sh"
+require_installed
+[ -x "$root/usr/bin/xdotool" ] || fail "xdotool is not installed in the root (scripts/package-debian13.sh)"
+rm -rf "$work"; mkdir -p "$work"
+work="$(cd "$work" && pwd)"
+bash "$SOURCE/tests/meshlab/obj2off.sh" "$SOURCE/resources/torus.obj" "$work/torus.off"
+
+cat > "$work/inside.sh" <<'INSIDE'
+set -u
+out="$1"; tag="$2"; mesh="$3"
+mkdir -p "$out/home-$tag" "$out/runtime-$tag"; chmod 700 "$out/runtime-$tag"
+touch "$out/display-started"
+HOME="$out/home-$tag" XDG_RUNTIME_DIR="$out/runtime-$tag" meshlab "$mesh" >"$out/gui-$tag.log" 2>&1 &
+pid=$!
+wid=""
+for _ in $(seq 1 160); do
+  wid="$(xdotool search --name '^MeshLab 20' 2>/dev/null | head -n 1)"
+  [ -n "$wid" ] && break
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.5
+done
+[ -n "$wid" ] || { echo "no window" >"$out/status-$tag.txt"; exit 0; }
+sleep 4
+xdotool windowfocus "$wid" 2>/dev/null; sleep 1
+xdotool key --clearmodifiers ctrl+f; sleep 1
+xdotool type --delay 50 "Field-Aligned CVT"; sleep 2
+xdotool key Down; sleep 0.5
+xdotool key Return; sleep 4
+did="$(xdotool search --name "Field-Aligned CVT" 2>/dev/null | grep -v "^$wid\$" | head -n 1)"
+[ -n "$did" ] || { echo "no dialog" >"$out/status-$tag.txt"; kill "$pid"; exit 0; }
+eval "$(xdotool getwindowgeometry --shell "$did")"
+echo "$WIDTH $HEIGHT $Y" >"$out/dialog-$tag.txt"
+xdotool mousemove 1 1; sleep 3
+xwd -id "$did" -silent >"$out/dialog-$tag.xwd"
+kill "$pid"; wait "$pid" 2>/dev/null
+echo closed >"$out/status-$tag.txt"
+INSIDE
+
+check_screen() {  # WIDTH HEIGHT TAG
+  set +e
+  timeout 300 bash "$SOURCE/scripts/debian13-chroot.sh" "$root" --bind "$SOURCE" --bind "$work" -- \
+    xvfb-run -a -s "-screen 0 ${1}x${2}x24" bash "$work/inside.sh" "$work" "$3" "$work/torus.off" \
+    >"$work/xvfb-$3.log" 2>&1
+  set -e
+  [ -e "$work/display-started" ] || { cat "$work/xvfb-$3.log"; skip "the virtual display did not start in the root"; }
+  [ "$(cat "$work/status-$3.txt" 2>/dev/null)" = closed ] \
+    || { tail -n 20 "$work/gui-$3.log"; fail "$3: $(cat "$work/status-$3.txt" 2>/dev/null || echo "the GUI did not run")"; }
+  local w h y
+  read -r w h y <"$work/dialog-$3.txt"
+  python3 "$SOURCE/tests/meshlab/xwd2png.py" "$work/dialog-$3.xwd" "$work/dialog-$3.png" >/dev/null || true
+  echo "remeshing dialog at ${1}x$2: ${w}x$h, top at $y"
+  [ $((y + h)) -le "$2" ] || fail "at ${1}x$2 the dialog's bottom ($((y + h))) is below the screen"
+  [ "$h" -le $(($2 * 2 / 3)) ] || fail "at ${1}x$2 the dialog is $h pixels tall, above 2/3 of the screen: its last row is clipped"
+}
+check_screen 1366 768 wxga
+check_screen 1280 1024 sxga
+echo "PASS"
