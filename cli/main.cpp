@@ -4,7 +4,6 @@
 #include "commands.h"
 #include "errors.h"
 
-#include <malloc.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -67,29 +66,22 @@ int run(const std::vector<std::string>& args)
 //! The heap in transparent huge pages where the kernel offers them on request (Debian's default,
 //! "madvise"): glibc reads GLIBC_TUNABLES=glibc.malloc.hugetlb=1 only as it loads, so it is set
 //! here and the same program runs again (a GLIBC_TUNABLES the user set is kept). Measured
-//! (issue 12, whole commands, medians of 7, 2 threads): mask 4000 1.07 -> 0.94 s, fandisk 5000
-//! 1.13 -> 1.03 s, bunny 5000 11 400 -> 2 800 minor page faults. How idle OpenMP threads wait is
-//! decided in-process by the core for the CLI and the MeshLab filter alike (thread_budget.h).
+//! (issue 31, whole commands, medians of 7, 2 threads): without it bunny 5000 takes 9 % longer,
+//! nefertiti 10000 6 %, and the hot loops' user time, not the page faults' system time, is what
+//! grows (fewer TLB misses). glibc 2.36 has no in-process switch for it, so the MeshLab filter
+//! runs without. How idle OpenMP threads wait is decided in-process by the core for the CLI and
+//! the MeshLab filter alike (thread_budget.h).
 void chooseHeapSettings(char** argv)
 {
     if (std::getenv("GLIBC_TUNABLES")) return;
     if (setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0) execv("/proc/self/exe", argv);  // returns only on failure
 }
 
-//! The heap grows and shrinks by 64 MB at a time instead of glibc's 128 kB: the optimisation
-//! allocates and frees buffers of a few hundred kB to a few MB every evaluation, and each
-//! shrink returned pages that the next evaluation faulted in again, zeroed by the kernel.
-//! Measured (issue 12, bunny 5000, 2 threads, 5 alternating whole commands): 15 900 minor page
-//! faults and a median of 1.58 s against 11 100 and 1.48 s. A process-wide setting, so the CLI
-//! makes it and the MeshLab plugin (a guest in MeshLab's process) does not.
-void keepHeapPadding() { mallopt(M_TOP_PAD, 64 << 20); }
-
 }  // namespace
 
 int main(int argc, char** argv)
 {
     chooseHeapSettings(argv);
-    keepHeapPadding();
     try {
         return run(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const fieldcvt::cli::UsageError& e) {
