@@ -347,8 +347,12 @@ void BM_DistanceFertility3000(benchmark::State& state)
     for (auto _ : state) benchmark::DoNotOptimize(computeDistance(setup.rdt, setup.surface, samples).hausdorff);
 }
 BENCHMARK(BM_DistanceFertility3000)
-    ->Args({1, 200000})->Args({1, 50000})->Args({2, 200000})->Args({2, 50000})
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({1, 200000})
+    ->Args({1, 50000})
+    ->Args({2, 200000})
+    ->Args({2, 50000})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The input side's serial stages on bunny.obj (69 451 faces, one thread): reading the OBJ file,
 // and the repair with the strict check after it (the "prepare" stage).
@@ -435,8 +439,10 @@ void BM_FieldFramesBunny5000(benchmark::State& state)
     for (auto _ : state) {
         const double shift = (step++ % 2 ? -0.02 : 0.02);
         for (size_t i = 0; i < points.size(); ++i) points[i] = setup.seeds[i] + Vec3(shift, -shift, shift);
-        if (state.range(0) == 0) benchmark::DoNotOptimize(energy.framesAt(points).normals.data());
-        else benchmark::DoNotOptimize(energy.framesAt(points, faces).normals.data());
+        if (state.range(0) == 0)
+            benchmark::DoNotOptimize(energy.framesAt(points).normals.data());
+        else
+            benchmark::DoNotOptimize(energy.framesAt(points, faces).normals.data());
     }
 }
 BENCHMARK(BM_FieldFramesBunny5000)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();

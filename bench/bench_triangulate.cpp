@@ -29,8 +29,12 @@ void BM_TriangulateLobedPolygon(benchmark::State& state)
     }
     state.SetComplexityN(n);
 }
-BENCHMARK(BM_TriangulateLobedPolygon)->Arg(1000)->Arg(10000)->Arg(100000)
-    ->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_TriangulateLobedPolygon)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Complexity(benchmark::oNLogN);
 // A strip wound 10 times (two arms of N / 2 corners, 1 apart, 0.5 wide): long thin channels,
 // the case ear clipping is slowest on and where a sweep's monotone pieces are many.
 void BM_TriangulateSpiralPolygon(benchmark::State& state)
@@ -52,10 +56,20 @@ void BM_TriangulateSpiralPolygon(benchmark::State& state)
     }
     state.SetComplexityN(state.range(0));
 }
-BENCHMARK(BM_TriangulateSpiralPolygon)->Arg(1000)->Arg(10000)->Arg(100000)
-    ->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_TriangulateSpiralPolygon)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Complexity(benchmark::oNLogN);
 // Small polygons (quads, hexagons: most polygon faces of files) on both sides of the threshold.
-BENCHMARK(BM_TriangulateLobedPolygon)->Name("BM_TriangulateSmallPolygon")->Arg(4)->Arg(8)->Arg(32)->Arg(64)->Arg(65)
+BENCHMARK(BM_TriangulateLobedPolygon)
+    ->Name("BM_TriangulateSmallPolygon")
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(32)
+    ->Arg(64)
+    ->Arg(65)
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -11,7 +11,8 @@
 
 namespace fieldcvt::cli {
 
-Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::string>& valued, const std::set<std::string>& flags)
+Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::string>& valued,
+                     const std::set<std::string>& flags)
 {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
@@ -75,7 +76,8 @@ long long Arguments::integer(const std::string& name, long long fallback, long l
     const long long n = parseInteger(name, *value, outOfRange);
     if (outOfRange) throw UsageError("--" + name + " expects an integer, got " + quoteInput(*value));
     if (n < min || n > max)
-        throw UsageError("--" + name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + *value);
+        throw UsageError("--" + name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " +
+                         *value);
     return n;
 }
 

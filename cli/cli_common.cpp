@@ -17,8 +17,8 @@ FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser
 {
     const auto name = a.text("field");
     if (!name) return fallback;
-    const std::string valid = allowUser ? "extrinsic, curvature-max, curvature-min or user"
-                                        : "extrinsic, curvature-max or curvature-min";
+    const std::string valid =
+        allowUser ? "extrinsic, curvature-max, curvature-min or user" : "extrinsic, curvature-max or curvature-min";
     FieldSource source;
     try {
         source = fieldSourceFromName(*name);
@@ -75,10 +75,10 @@ void checkWritable(const std::string& path, const std::string& input)
     if (!existed) fs::remove(path, ec);
 }
 
-
 void checkDistinctOutputs(const std::string& path, const std::string& other, const std::string& what)
 {
-    if (sameFile(path, other)) throw IOError(path + ": is also the " + what + " " + other + "; choose another file (one would overwrite the other)");
+    if (sameFile(path, other))
+        throw IOError(path + ": is also the " + what + " " + other + "; choose another file (one would overwrite the other)");
 }
 
 void checkOutputPath(const std::string& path, const std::string& input)

@@ -87,8 +87,8 @@ void printUsage()
         "  --quiet        no progress output\n"
         "  -h, --help     show this help\n",
         cvt.lambda, cvt.cvtIterations, cvt.fcvtIterations, fcvt.lambda, fcvt.cvtIterations, fcvt.fcvtIterations,
-        vertexCountRange().c_str(), static_cast<unsigned long long>(fcvt.seed), fcvt.lambda, fieldSourceName(fcvt.fieldSource).c_str(),
-        fcvt.threads, kMeshlabIterations);
+        vertexCountRange().c_str(), static_cast<unsigned long long>(fcvt.seed), fcvt.lambda,
+        fieldSourceName(fcvt.fieldSource).c_str(), fcvt.threads, kMeshlabIterations);
 }
 
 struct Row {
@@ -111,14 +111,13 @@ double remeshSeconds(const RemeshResult& r)
 
 void printTable(const std::vector<Row>& rows)
 {
-    std::printf("%-17s %7s %7s %6s %6s %6s %6s %6s %6s %6s %6s %11s %9s %8s\n", "method", "|X|", "|t|", "Q_min",
-                "Q_avg", "th_min", "th_avg", "th_max", "%<30", "%>90", "V6%", "d_RMS(1e-3)", "d_H(1e-2)", "seconds");
+    std::printf("%-17s %7s %7s %6s %6s %6s %6s %6s %6s %6s %6s %11s %9s %8s\n", "method", "|X|", "|t|", "Q_min", "Q_avg",
+                "th_min", "th_avg", "th_max", "%<30", "%>90", "V6%", "d_RMS(1e-3)", "d_H(1e-2)", "seconds");
     for (const Row& row : rows) {
         const QualityMetrics& m = row.result.metrics;
-        std::printf("%-17s %7d %7d %6.3f %6.3f %6.2f %6.2f %6.2f %6.2f %6.2f %6.2f %11.3f %9.3f %8.2f\n",
-                    row.method.c_str(), row.result.mesh.vertexCount(), row.result.mesh.faceCount(), m.qMin, m.qAvg,
-                    m.thetaMin, m.thetaMinAvg, m.thetaMax, m.pctLt30, m.pctGt90, m.v6Pct, m.dRms * 1e3, m.dH * 1e2,
-                    row.seconds);
+        std::printf("%-17s %7d %7d %6.3f %6.3f %6.2f %6.2f %6.2f %6.2f %6.2f %6.2f %11.3f %9.3f %8.2f\n", row.method.c_str(),
+                    row.result.mesh.vertexCount(), row.result.mesh.faceCount(), m.qMin, m.qAvg, m.thetaMin, m.thetaMinAvg,
+                    m.thetaMax, m.pctLt30, m.pctGt90, m.v6Pct, m.dRms * 1e3, m.dH * 1e2, row.seconds);
     }
 }
 
@@ -126,9 +125,8 @@ nlohmann::ordered_json rowsJson(const std::vector<Row>& rows)
 {
     nlohmann::ordered_json j = nlohmann::ordered_json::array();
     for (const Row& row : rows) {
-        nlohmann::ordered_json r = {{"method", row.method},
-                                    {"vertices", row.result.mesh.vertexCount()},
-                                    {"faces", row.result.mesh.faceCount()}};
+        nlohmann::ordered_json r = {
+            {"method", row.method}, {"vertices", row.result.mesh.vertexCount()}, {"faces", row.result.mesh.faceCount()}};
         const nlohmann::ordered_json metrics = metricsJson(row.result.metrics);
         for (auto it = metrics.cbegin(); it != metrics.cend(); ++it) r[it.key()] = *it;
         r["seconds"] = row.seconds;
@@ -206,8 +204,8 @@ int runCompare(const std::vector<std::string>& args)
     fcvt.valenceOptimization = !a.flag("no-valence");
     checkOptions(fcvt);
     if (fcvt.fieldSource == FieldSource::User && !isPlyPath(inPath))
-        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
-                         inPath + " is not a .ply file");
+        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " + inPath +
+                         " is not a .ply file");
     const bool quiet = a.flag("quiet");
     const int meshlabIterations = static_cast<int>(a.integer("meshlab-iterations", kMeshlabIterations, 1, 1000));
     if (a.flag("no-meshlab") && (a.has("meshlabserver") || a.has("meshlab-iterations")))
@@ -244,7 +242,8 @@ int runCompare(const std::vector<std::string>& args)
         const Progress inner = printer.callback();
         for (Row& row : rows) {
             Progress progress;
-            if (inner) progress = [&](const std::string& stage, double percent) { return inner(row.method + " " + stage, percent); };
+            if (inner)
+                progress = [&](const std::string& stage, double percent) { return inner(row.method + " " + stage, percent); };
             try {
                 row.result = remesh(input, row.params, progress);
             } catch (const InvalidInputError& e) {
@@ -261,8 +260,10 @@ int runCompare(const std::vector<std::string>& args)
         notes.push_back("no meshlab-isotropic row: meshlabserver not found (--meshlabserver PATH or $FCVT_MESHLABSERVER)");
 
     if (!quiet) {
-        for (const std::string& warning : readInfo.warnings) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
-        for (const std::string& note : readInfo.notes) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
+        for (const std::string& warning : readInfo.warnings)
+            std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
+        for (const std::string& note : readInfo.notes)
+            std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
         for (const Row& row : rows)
             for (const std::string& w : row.result.warnings)
                 std::fprintf(stderr, "fcvt: %s: %s: %s\n", row.meshlab ? "note" : "warning", row.method.c_str(), w.c_str());
@@ -270,8 +271,10 @@ int runCompare(const std::vector<std::string>& args)
     }
     if (savePrefix)
         for (const Row& row : rows) writeMesh(savePath(row.method), row.result.mesh);
-    if (a.flag("json")) std::printf("%s\n", rowsJson(rows).dump(2).c_str());
-    else printTable(rows);
+    if (a.flag("json"))
+        std::printf("%s\n", rowsJson(rows).dump(2).c_str());
+    else
+        printTable(rows);
     return 0;
 }
 

@@ -67,9 +67,11 @@ int runConvert(const std::vector<std::string>& args)
     writeMesh(outPath, input, keepAttributes ? &attributes : nullptr);
 
     // What makes the mesh differ from the file is said even with --quiet.
-    for (const std::string& warning : readInfo.warnings) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
+    for (const std::string& warning : readInfo.warnings)
+        std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
     if (!quiet) {
-        for (const std::string& note : readInfo.notes) std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
+        for (const std::string& note : readInfo.notes)
+            std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());
         std::vector<std::string> checkLines = check.information;
         checkLines.insert(checkLines.end(), check.notes.begin(), check.notes.end());
         for (const std::string& note : checkLines)

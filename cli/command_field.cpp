@@ -60,8 +60,8 @@ int runField(const std::vector<std::string>& args)
     if (!isPlyPath(outPath))
         throw UsageError("field writes a .ply file (the only format with the field's vertex properties), got '" + outPath + "'");
     if (params.source == FieldSource::User && !isPlyPath(inPath))
-        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
-                         inPath + " is not a .ply file");
+        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " + inPath +
+                         " is not a .ply file");
     checkOutputPath(outPath, inPath);
 
     const auto start = std::chrono::steady_clock::now();
@@ -102,14 +102,14 @@ int runField(const std::vector<std::string>& args)
         const TopologySummary t = computeTopology(mesh);
         const long long chi = static_cast<long long>(t.vertices) - t.edges + t.faces;
         std::printf("%s: %d vertices, %d faces, field %s (seed %llu), %.2f s\n", outPath.c_str(), mesh.vertexCount(),
-                    mesh.faceCount(), fieldSourceName(params.source).c_str(),
-                    static_cast<unsigned long long>(params.seed), secondsSince(start));
+                    mesh.faceCount(), fieldSourceName(params.source).c_str(), static_cast<unsigned long long>(params.seed),
+                    secondsSince(start));
         std::printf("singularities: %zu\n", singularities.size());
         std::printf("positive: %d, negative: %d\n", positive, negative);
         std::printf("index sum: %lld\n", indexSum);
         std::printf("euler characteristic: %lld\n", chi);
-        std::printf("6 chi: %lld (genus %d, %d boundary loops; the index sum equals 6 chi on a closed surface)\n",
-                    6 * chi, t.genus, t.boundaryLoops);
+        std::printf("6 chi: %lld (genus %d, %d boundary loops; the index sum equals 6 chi on a closed surface)\n", 6 * chi,
+                    t.genus, t.boundaryLoops);
     }
     return 0;
 }

@@ -33,12 +33,13 @@ void printTable(const std::string& path, const TriMesh& mesh, const nlohmann::or
     std::printf("%-14s %s\n%-14s %d\n%-14s %d\n", "mesh", path.c_str(), "vertices", mesh.vertexCount(), "faces",
                 mesh.faceCount());
     for (const auto& [key, value] : metrics.items()) {
-        if (value.is_null()) std::printf("%-14s n/a\n", key.c_str());
-        else std::printf("%-14s %.6g\n", key.c_str(), value.get<double>());
+        if (value.is_null())
+            std::printf("%-14s n/a\n", key.c_str());
+        else
+            std::printf("%-14s %.6g\n", key.c_str(), value.get<double>());
     }
-    std::printf("%-14s %d\n%-14s %d\n%-14s %d\n%-14s %s\n%-14s %s\n", "genus", t.genus, "boundary_loops",
-                t.boundaryLoops, "components", t.components, "manifold", t.manifold() ? "yes" : "no", "orientable",
-                t.orientable ? "yes" : "no");
+    std::printf("%-14s %d\n%-14s %d\n%-14s %d\n%-14s %s\n%-14s %s\n", "genus", t.genus, "boundary_loops", t.boundaryLoops,
+                "components", t.components, "manifold", t.manifold() ? "yes" : "no", "orientable", t.orientable ? "yes" : "no");
 }
 
 }  // namespace
@@ -61,8 +62,10 @@ int runMetrics(const std::vector<std::string>& args)
         quality.dBoundary = boundaryDistance(mesh, reference);
     }
     const nlohmann::ordered_json metrics = metricsJson(quality);
-    if (a.flag("json")) std::printf("%s\n", metrics.dump(2).c_str());
-    else printTable(path, mesh, metrics, computeTopology(mesh));
+    if (a.flag("json"))
+        std::printf("%s\n", metrics.dump(2).c_str());
+    else
+        printTable(path, mesh, metrics, computeTopology(mesh));
     return 0;
 }
 

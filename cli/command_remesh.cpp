@@ -80,8 +80,9 @@ void printUsage()
         "                        on stderr otherwise); without --report, d_RMS and d_H are then\n"
         "                        not computed (nothing would show them)\n"
         "  -h, --help            show this help\n",
-        vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda, defaults.latticeLloydIterations, defaults.lloydIterations, defaults.cvtIterations,
-        defaults.fcvtIterations, defaults.optimisationFacesPerSample, defaults.featureAngleDegrees, defaults.gradation,
+        vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda,
+        defaults.latticeLloydIterations, defaults.lloydIterations, defaults.cvtIterations, defaults.fcvtIterations,
+        defaults.optimisationFacesPerSample, defaults.featureAngleDegrees, defaults.gradation,
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
@@ -90,8 +91,9 @@ void printUsage()
 RemeshParams paramsFrom(const Arguments& a)
 {
     if (a.has("vertices") == a.has("target-length"))
-        throw UsageError("remesh needs exactly one of --vertices N (the target vertex count) and --target-length L "
-                         "(the target edge length)");
+        throw UsageError(
+            "remesh needs exactly one of --vertices N (the target vertex count) and --target-length L "
+            "(the target edge length)");
     RemeshParams p;
     p.vertexCount = a.saturatedInt("vertices", p.vertexCount);
     p.fieldSource = fieldOption(a, p.fieldSource, true);
@@ -109,9 +111,12 @@ RemeshParams paramsFrom(const Arguments& a)
     p.repair = !a.flag("no-repair");
     p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees);
     if (const auto adaptive = a.text("adaptive")) {
-        if (*adaptive == "curvature") p.density = DensitySource::Curvature;
-        else if (*adaptive == "none") p.density = DensitySource::Uniform;
-        else throw UsageError("--adaptive must be 'curvature' or 'none', got " + quoteInput(*adaptive));
+        if (*adaptive == "curvature")
+            p.density = DensitySource::Curvature;
+        else if (*adaptive == "none")
+            p.density = DensitySource::Uniform;
+        else
+            throw UsageError("--adaptive must be 'curvature' or 'none', got " + quoteInput(*adaptive));
     }
     if (a.has("gradation") && p.density != DensitySource::Curvature)
         throw UsageError("--gradation applies to --adaptive curvature only");
@@ -146,9 +151,8 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
 int runRemesh(const std::vector<std::string>& args)
 {
     const Arguments a(args,
-                      {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations", "seed",
-                       "threads",
-                       "time-limit", "report", "feature-angle", "adaptive", "gradation"},
+                      {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations",
+                       "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation"},
                       {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start"});
     if (a.flag("help")) {
         printUsage();
@@ -166,8 +170,8 @@ int runRemesh(const std::vector<std::string>& args)
     if (quiet && !a.has("report")) params.computeDistances = false;
     params.computeSingularities = a.has("report");  // only the report lists them
     if (params.fieldSource == FieldSource::User && !isPlyPath(inPath))
-        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " +
-                         inPath + " is not a .ply file");
+        throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " + inPath +
+                         " is not a .ply file");
     checkOutputPath(outPath, inPath);
     if (const auto reportPath = a.text("report")) {
         checkDistinctOutputs(*reportPath, outPath, "output mesh");
@@ -243,31 +247,31 @@ int runRemesh(const std::vector<std::string>& args)
         // The core computes a field only when it is used (lambda > 0 and FCVT iterations).
         field["computed"] = !result.outputDirections.empty() || !result.singularities.empty();
         if (field["computed"]) field["mesh"] = fieldMeshDescription(result);
-        const nlohmann::ordered_json report = {{"input_file", inPath},
-                                               {"output_file", outPath},
-                                               {"vertices", result.mesh.vertexCount()},
-                                               {"faces", result.mesh.faceCount()},
-                                               {"mean_edge_length", meanEdge},
-                                               {"evaluations", result.evaluations},
-                                               {"threads_used", result.threads},
-                                               {"optimisation_faces", result.optimisationFaces},
-                                               {"time_s", times},
-                                               {"metrics", metricsJson(result.metrics)},
-                                               {"input", topologyJson(result.inputTopology)},
-                                               {"output", topologyJson(outputTopology)},
-                                               {"repair", repairJson(params.repair, result.repair)},
-                                               {"params", paramsOut},
-                                               {"field", field},
-                                               {"valence", valenceJson(params.valenceOptimization, result.valence)},
-                                               {"start", result.lattice.passes > 0
-                                                             ? nlohmann::ordered_json{{"kind", "lattice"},
-                                                                                      {"spacing", result.lattice.spacing},
-                                                                                      {"passes", result.lattice.passes},
-                                                                                      {"samples", result.lattice.samples}}
-                                                             : nlohmann::ordered_json{{"kind", "random"}}},
-                                               {"energy_history", energyHistoryJson(result.energyHistory)},
-                                               {"warnings", warnings},
-                                               {"notes", notes}};
+        const nlohmann::ordered_json report = {
+            {"input_file", inPath},
+            {"output_file", outPath},
+            {"vertices", result.mesh.vertexCount()},
+            {"faces", result.mesh.faceCount()},
+            {"mean_edge_length", meanEdge},
+            {"evaluations", result.evaluations},
+            {"threads_used", result.threads},
+            {"optimisation_faces", result.optimisationFaces},
+            {"time_s", times},
+            {"metrics", metricsJson(result.metrics)},
+            {"input", topologyJson(result.inputTopology)},
+            {"output", topologyJson(outputTopology)},
+            {"repair", repairJson(params.repair, result.repair)},
+            {"params", paramsOut},
+            {"field", field},
+            {"valence", valenceJson(params.valenceOptimization, result.valence)},
+            {"start", result.lattice.passes > 0 ? nlohmann::ordered_json{{"kind", "lattice"},
+                                                                         {"spacing", result.lattice.spacing},
+                                                                         {"passes", result.lattice.passes},
+                                                                         {"samples", result.lattice.samples}}
+                                                : nlohmann::ordered_json{{"kind", "random"}}},
+            {"energy_history", energyHistoryJson(result.energyHistory)},
+            {"warnings", warnings},
+            {"notes", notes}};
         writeJsonFile(*reportPath, report);
     }
 
@@ -275,11 +279,12 @@ int runRemesh(const std::vector<std::string>& args)
     if (!quiet) {
         for (const std::string& n : notes) std::fprintf(stderr, "fcvt: note: %s\n", escapeControlCharacters(n).c_str());
         const QualityMetrics& m = result.metrics;
-        std::printf("%s: %d vertices, %d faces, genus %d, %d boundary loops%s; Q_avg %.3f, theta_min %.1f deg, "
-                    "V6 %.1f %%, d_H %.3g %% of the diagonal, mean edge %.4g; %d evaluations, %.2f s\n",
-                    outPath.c_str(), result.mesh.vertexCount(), result.mesh.faceCount(), outputTopology.genus,
-                    outputTopology.boundaryLoops, outputTopology.manifold() ? "" : " (NOT MANIFOLD)", m.qAvg,
-                    m.thetaMin, m.v6Pct, 100 * m.dH, meanEdge, result.evaluations, totalSeconds);
+        std::printf(
+            "%s: %d vertices, %d faces, genus %d, %d boundary loops%s; Q_avg %.3f, theta_min %.1f deg, "
+            "V6 %.1f %%, d_H %.3g %% of the diagonal, mean edge %.4g; %d evaluations, %.2f s\n",
+            outPath.c_str(), result.mesh.vertexCount(), result.mesh.faceCount(), outputTopology.genus,
+            outputTopology.boundaryLoops, outputTopology.manifold() ? "" : " (NOT MANIFOLD)", m.qAvg, m.thetaMin, m.v6Pct,
+            100 * m.dH, meanEdge, result.evaluations, totalSeconds);
     }
     return 0;
 }

@@ -13,11 +13,11 @@ namespace fieldcvt::cli {
 std::string findMeshlabserver(const std::string& explicitPath);
 
 struct IsotropicRun {
-    TriMesh mesh;               //!< the remeshed surface as MeshLab wrote it
-    double targetLength = 0;    //!< TargetLen of the last run (IN's units)
-    int iterations = 0;         //!< the filter's Iterations
-    int runs = 0;               //!< meshlabserver runs made to approach the vertex count
-    double seconds = 0;         //!< wall time of the last run (MeshLab start-up and file I/O included)
+    TriMesh mesh;                    //!< the remeshed surface as MeshLab wrote it
+    double targetLength = 0;         //!< TargetLen of the last run (IN's units)
+    int iterations = 0;              //!< the filter's Iterations
+    int runs = 0;                    //!< meshlabserver runs made to approach the vertex count
+    double seconds = 0;              //!< wall time of the last run (MeshLab start-up and file I/O included)
     std::vector<std::string> notes;  //!< how the target length was matched
 };
 

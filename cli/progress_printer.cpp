@@ -31,7 +31,8 @@ void ProgressPrinter::report(const std::string& stage, double percent)
         // A bar of kBarWidth cells; \33[K clears what a longer previous stage name left on the line.
         constexpr int kBarWidth = 30;
         const int filled = static_cast<int>(percent / 100 * kBarWidth + 0.5);
-        const std::string bar = std::string(static_cast<size_t>(filled), '#') + std::string(static_cast<size_t>(kBarWidth - filled), '-');
+        const std::string bar =
+            std::string(static_cast<size_t>(filled), '#') + std::string(static_cast<size_t>(kBarWidth - filled), '-');
         std::fprintf(stderr, "\rfcvt: [%s] %5.1f %% %s\33[K", bar.c_str(), percent, stage.c_str());
         lineOpen_ = true;
     } else {

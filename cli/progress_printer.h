@@ -28,8 +28,8 @@ private:
     const bool terminal_;
     std::mutex mutex_;
     std::string stage_;
-    int shown_ = -1;          //!< last percent printed (terminal: tenths, else tens)
-    bool lineOpen_ = false;   //!< a terminal line is waiting for its end
+    int shown_ = -1;         //!< last percent printed (terminal: tenths, else tens)
+    bool lineOpen_ = false;  //!< a terminal line is waiting for its end
 };
 
 }  // namespace fieldcvt::cli

@@ -9,7 +9,10 @@ namespace fieldcvt::cli {
 
 namespace {
 
-nlohmann::ordered_json numberOrNull(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(nullptr); }
+nlohmann::ordered_json numberOrNull(double x)
+{
+    return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(nullptr);
+}
 
 }  // namespace
 

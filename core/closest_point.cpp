@@ -33,8 +33,8 @@ inline double segmentParameter(const Vec3& p, const Vec3& a, const Vec3& ab)
 
 //! Tries edge (from -> to) of the triangle, whose barycentric weights are (1 - t) at corner
 //! `from` and t at corner `to`; keeps it in (bestPoint, bestBary) if it is closer.
-inline void tryEdge(const Vec3& p, const Vec3& from, const Vec3& to, int fromCorner, int toCorner, double& best2,
-                    Vec3& bestPoint, Vec3& bestBary)
+inline void tryEdge(const Vec3& p, const Vec3& from, const Vec3& to, int fromCorner, int toCorner, double& best2, Vec3& bestPoint,
+                    Vec3& bestBary)
 {
     const Vec3 edge = to - from;
     const double t = segmentParameter(p, from, edge);
@@ -222,8 +222,8 @@ void ClosestPointTree::Impl::build(const TriMesh& mesh)
         for (int k = 0; k < 3; ++k)
             if (mesh.faces[f][k] < 0 || mesh.faces[f][k] >= vertexCount)
                 throw InvalidInputError("closest-point tree: face " + std::to_string(f) + " refers to vertex " +
-                                        std::to_string(mesh.faces[f][k]) + ", the mesh has " +
-                                        std::to_string(vertexCount) + " vertices");
+                                        std::to_string(mesh.faces[f][k]) + ", the mesh has " + std::to_string(vertexCount) +
+                                        " vertices");
     if (faceCount == 0) return;
 
     std::vector<Vec3> centroids(faceCount);
@@ -248,8 +248,8 @@ void ClosestPointTree::Impl::build(const TriMesh& mesh)
 }
 
 //! Builds the subtree of faces order[begin, end) into `node`; returns its depth.
-int ClosestPointTree::Impl::buildNode(Node& node, int begin, int end, std::vector<int>& order,
-                                      const std::vector<Vec3>& centroids, const TriMesh& mesh)
+int ClosestPointTree::Impl::buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
+                                      const TriMesh& mesh)
 {
     Vec3 lo = Vec3::Constant(kInfinity), hi = Vec3::Constant(-kInfinity);
     Vec3 centroidLo = lo, centroidHi = hi;

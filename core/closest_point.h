@@ -10,9 +10,9 @@
 namespace fieldcvt {
 
 struct ClosestPoint {
-    Vec3 point;            //!< closest point on the surface
-    int face = -1;         //!< face containing it
-    Vec3 barycentric;      //!< its barycentric coordinates in that face (sum 1)
+    Vec3 point;        //!< closest point on the surface
+    int face = -1;     //!< face containing it
+    Vec3 barycentric;  //!< its barycentric coordinates in that face (sum 1)
     double squaredDistance = 0;
 };
 
@@ -68,7 +68,7 @@ public:
 
 private:
     const TriMesh& mesh_;
-    std::vector<int> across_;  //!< per half-edge 3 f + k: the face across it, -1 on a border or non-manifold edge
+    std::vector<int> across_;          //!< per half-edge 3 f + k: the face across it, -1 on a border or non-manifold edge
     std::vector<int> fanFirst_, fan_;  //!< CSR: the faces around each vertex
 };
 

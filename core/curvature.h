@@ -8,10 +8,10 @@
 namespace fieldcvt {
 
 struct PrincipalCurvature {
-    std::vector<double> kMax;    //!< principal curvature of larger magnitude, per vertex
-    std::vector<double> kMin;    //!< principal curvature of smaller magnitude
-    std::vector<Vec3> dirMax;    //!< unit tangent direction of kMax (orthogonal to the normal)
-    std::vector<Vec3> dirMin;    //!< unit tangent direction of kMin
+    std::vector<double> kMax;  //!< principal curvature of larger magnitude, per vertex
+    std::vector<double> kMin;  //!< principal curvature of smaller magnitude
+    std::vector<Vec3> dirMax;  //!< unit tangent direction of kMax (orthogonal to the normal)
+    std::vector<Vec3> dirMin;  //!< unit tangent direction of kMin
     //! 1 where |kMax| and |kMin| differ clearly enough for the directions to mean something;
     //! 0 at (nearly) umbilic or flat vertices and where the fit is degenerate.
     std::vector<unsigned char> reliable;

@@ -184,9 +184,7 @@ private:
             vertexAlive_.pop_back();
             vertexFaces_.pop_back();
             break;
-        case Kind::KillVertex:
-            vertexAlive_[e.index] = 1;
-            break;
+        case Kind::KillVertex: vertexAlive_[e.index] = 1; break;
         case Kind::SetVertex:
             positions_[e.index] = saved_.back().position;
             data_[e.index] = saved_.back().data;

@@ -39,7 +39,7 @@ double directionDistance(const Vec3& e, const Vec3& n, const Vec3& d, Vec3* grad
     const std::complex<double> z(a, b);
     const std::complex<double> z2 = z * z, z5 = z2 * z2 * z, z6 = z5 * z;
     const double rho5 = rho2 * rho2 * rho;
-    const double g1 = rho / r;             // sin θ
+    const double g1 = rho / r;                 // sin θ
     const double g2 = z6.real() / (rho5 * r);  // cos 6φ · sin θ
     if (gradient) {
         // ∂ρ/∂e = t/ρ with t = a d + b m (tangent part); ∂r/∂e = e/r;
@@ -125,7 +125,8 @@ FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vecto
     return framesAt(points, faces, mortonIndexOrder(points));
 }
 
-FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vector<int>& faces, const std::vector<int>& order) const
+FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vector<int>& faces,
+                                     const std::vector<int>& order) const
 {
     FieldFrames frames;
     frames.normals.resize(points.size());

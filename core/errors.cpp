@@ -25,8 +25,10 @@ std::string quoteInput(std::string_view text, std::size_t maxChars)
         const auto c = static_cast<unsigned char>(ch);
         const bool continuation = (c & 0xC0) == 0x80;  // a UTF-8 character is counted (and cut) whole
         if (!continuation && shown == maxChars) return out + "'...";
-        if (isControl(c)) appendEscaped(out, c);
-        else out += ch;  // UTF-8 passes through: names in any script stay readable
+        if (isControl(c))
+            appendEscaped(out, c);
+        else
+            out += ch;  // UTF-8 passes through: names in any script stay readable
         shown += continuation ? 0 : 1;
     }
     return out + "'";
@@ -38,8 +40,10 @@ std::string escapeControlCharacters(std::string_view message)
     out.reserve(message.size());
     for (char ch : message) {
         const auto c = static_cast<unsigned char>(ch);
-        if (isControl(c)) appendEscaped(out, c);
-        else out += ch;
+        if (isControl(c))
+            appendEscaped(out, c);
+        else
+            out += ch;
     }
     return out;
 }

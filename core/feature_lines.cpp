@@ -96,8 +96,7 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
         else if (turn > kCornerTurnDegrees)
             candidates.push_back({turn, v});
     }
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [](const auto& x, const auto& y) { return x.first > y.first; });
+    std::stable_sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
     const double spacing2 = cornerSpacing * cornerSpacing;
     for (const auto& candidate : candidates) {
         const int v = candidate.second;
@@ -223,9 +222,9 @@ Vec3 projectOnPiece(const CurvePiece& piece, const std::vector<Segment>& segment
 
 }  // namespace
 
-std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
-                                                      const TriMesh& surface, const std::vector<Segment>& border,
-                                                      const FeatureLines& features, int iterations, bool iterationsFollow)
+std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, std::vector<Vec3>& seeds, const TriMesh& surface,
+                                                      const std::vector<Segment>& border, const FeatureLines& features,
+                                                      int iterations, bool iterationsFollow)
 {
     std::vector<SampleConstraint> role(seeds.size(), SampleConstraint::Free);
     if (border.empty() && features.empty()) return role;

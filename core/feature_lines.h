@@ -27,9 +27,8 @@ struct FeatureLines {
 //! that must be edges of it; others are ignored and counted in `ignoredUserEdges`), and the
 //! corners of the lines and of the open border. A corner closer than `cornerSpacing` to a more
 //! important one (line ends and branches first, then sharper turns) is left out.
-FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees,
-                            const std::vector<std::array<int, 2>>& userEdges = {}, int* ignoredUserEdges = nullptr,
-                            double cornerSpacing = 0);
+FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const std::vector<std::array<int, 2>>& userEdges = {},
+                            int* ignoredUserEdges = nullptr, double cornerSpacing = 0);
 
 //! Where each sample ended up after relaxConstrainedSamples (what it may do afterwards).
 enum class SampleConstraint : char { Free, Border, Feature, Corner };
@@ -42,10 +41,9 @@ enum class SampleConstraint : char { Free, Border, Feature, Corner };
 //! centroid (else they stay for the iterations that follow to move: only the border faces' part
 //! of the RVD is computed). Returns what each sample is; the caller freezes the constrained ones
 //! for the remaining (FCVT) iterations.
-std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, std::vector<Vec3>& seeds,
-                                                      const TriMesh& surface, const std::vector<Segment>& border,
-                                                      const FeatureLines& features, int iterations,
-                                                      bool iterationsFollow = true);
+std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, std::vector<Vec3>& seeds, const TriMesh& surface,
+                                                      const std::vector<Segment>& border, const FeatureLines& features,
+                                                      int iterations, bool iterationsFollow = true);
 
 //! One connected piece of the feature lines inside one sample's cell (its 1D restricted
 //! Voronoi cell can have several: two lines that pass close to each other).

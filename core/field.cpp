@@ -36,8 +36,8 @@ void checkField(const TriMesh& mesh, const DirectionField& field)
 // boundaries and creases the same way).
 // `constrainingBorderLength` (when given) gets the total length of the border edges that
 // constrain the field (0: no border constraint).
-FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& normals, double sharpAngle,
-                                 bool alignToBorder, double* constrainingBorderLength = nullptr)
+FieldConstraints edgeConstraints(const TriMesh& mesh, const std::vector<Vec3>& normals, double sharpAngle, bool alignToBorder,
+                                 double* constrainingBorderLength = nullptr)
 {
     if (constrainingBorderLength) *constrainingBorderLength = 0;
     const int n = mesh.vertexCount();
@@ -104,7 +104,8 @@ FieldSource fieldSourceFromName(const std::string& name)
     if (name == "curvature-max") return FieldSource::CurvatureMax;
     if (name == "curvature-min") return FieldSource::CurvatureMin;
     if (name == "user") return FieldSource::User;
-    throw InvalidInputError("unknown field source " + quoteInput(name) + " (expected extrinsic, curvature-max, curvature-min or user)");
+    throw InvalidInputError("unknown field source " + quoteInput(name) +
+                            " (expected extrinsic, curvature-max, curvature-min or user)");
 }
 
 std::string fieldSourceName(FieldSource source)
@@ -178,8 +179,8 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params, Fiel
         // bunny's holes 1.4, camelhead's neck 1.0) keep the extrinsic field, which measured
         // better there: bunny 5000 d_H 0.66 / 0.71 % (seeds 1, 2) against 0.85 / 0.77 %.
         const bool longBorder = borderLength > 0 && borderLength >= kLongBorder * std::sqrt(surfaceArea(mesh));
-        const bool intrinsic = params.smoothness == FieldSmoothness::Intrinsic ||
-                               (params.smoothness == FieldSmoothness::Auto && longBorder);
+        const bool intrinsic =
+            params.smoothness == FieldSmoothness::Intrinsic || (params.smoothness == FieldSmoothness::Auto && longBorder);
         return solveWithConstraints(mesh, std::move(normals), constraints, params.seed, params.smoothingIterations, report,
                                     intrinsic, hierarchy);
     }
@@ -197,8 +198,7 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params, Fiel
         if (report) report->umbilicVertices = mesh.vertexCount() - constraints.count();
         return field;
     }
-    case FieldSource::User:
-        throw InvalidInputError("field source 'user' needs per-vertex vectors (fieldFromVectors)");
+    case FieldSource::User: throw InvalidInputError("field source 'user' needs per-vertex vectors (fieldFromVectors)");
     }
     throw InvalidInputError("unknown field source");
 }
@@ -308,8 +308,7 @@ std::vector<Singularity> findSingularities(const TriMesh& mesh, const DirectionF
                 s = next;
             }
             // Closed iff this single fan holds every corner and wraps around to its start.
-            if (fanStart != 0 || static_cast<int>(fan.size()) != end - begin ||
-                prevOf(fan.back()) != nextOf(fan.front()))
+            if (fanStart != 0 || static_cast<int>(fan.size()) != end - begin || prevOf(fan.back()) != nextOf(fan.front()))
                 closed = false;
         }
         double total = 0;

@@ -101,9 +101,9 @@ std::vector<Vec3> vertexNormals(const TriMesh& mesh);
 double extrinsicEnergy(const TriMesh& mesh, const DirectionField& field);
 
 struct Singularity {
-    int face = -1;       //!< face whose corners' representatives turn by a non-zero amount
-    int index = 0;       //!< 6-RoSy index in sixths of a turn (sum over faces = 6·χ on a closed surface)
-    Vec3 position;       //!< the face's centroid
+    int face = -1;  //!< face whose corners' representatives turn by a non-zero amount
+    int index = 0;  //!< 6-RoSy index in sixths of a turn (sum over faces = 6·χ on a closed surface)
+    Vec3 position;  //!< the face's centroid
 };
 
 //! Per-face 6-RoSy index: the sum of the rotations (in multiples of 60°) of the matched

@@ -49,8 +49,7 @@ void buildAdjacency(int vertexCount, const std::vector<DirectedEdge>& edges, Fie
         auto first = bucket.begin() + count[v], last = bucket.begin() + count[v + 1];
         std::sort(first, last, [](const auto& a, const auto& b) { return a.first < b.first; });
         for (auto it = first; it != last; ++it) {
-            if (!g.neighbours.empty() && static_cast<int>(g.neighbours.size()) > g.offsets[v] &&
-                g.neighbours.back() == it->first)
+            if (!g.neighbours.empty() && static_cast<int>(g.neighbours.size()) > g.offsets[v] && g.neighbours.back() == it->first)
                 g.weights.back() += it->second;
             else {
                 g.neighbours.push_back(it->first);

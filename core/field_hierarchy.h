@@ -94,9 +94,9 @@ struct FieldGraph {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     std::vector<double> areas;
-    std::vector<int> offsets;    //!< size V + 1
+    std::vector<int> offsets;  //!< size V + 1
     std::vector<int> neighbours;
-    std::vector<double> weights; //!< per directed entry (number of finest edges it stands for)
+    std::vector<double> weights;  //!< per directed entry (number of finest edges it stands for)
     //! Vertices grouped by a greedy colouring (no two neighbours share a colour), so one
     //! colour class can be updated in parallel with the result of a sequential sweep.
     std::vector<int> colourOffsets;
@@ -106,8 +106,8 @@ struct FieldGraph {
 };
 
 struct FieldHierarchyLevels {
-    std::vector<FieldGraph> levels;          //!< [0] = the input mesh's vertices
-    std::vector<std::vector<int>> parents;   //!< parents[l][v]: v's vertex in level l + 1
+    std::vector<FieldGraph> levels;         //!< [0] = the input mesh's vertices
+    std::vector<std::vector<int>> parents;  //!< parents[l][v]: v's vertex in level l + 1
 };
 
 //! Per vertex of the input mesh: whether its direction is prescribed, and the direction
@@ -133,8 +133,8 @@ double graphEnergy(const FieldGraph& graph, const std::vector<Vec3>& directions,
 //! lower it further, so the energy is non-increasing sweep after sweep. Appends the energy
 //! after each sweep to `energies` when given. With `intrinsic`, each neighbour's frame is first
 //! carried to i's tangent plane (rosy::rotateIntoPlane) and the energy is the intrinsic one.
-void smoothLevel(const FieldGraph& graph, std::vector<Vec3>& directions, const std::vector<unsigned char>* fixed,
-                 int iterations, std::vector<double>* energies = nullptr, bool intrinsic = false);
+void smoothLevel(const FieldGraph& graph, std::vector<Vec3>& directions, const std::vector<unsigned char>* fixed, int iterations,
+                 std::vector<double>* energies = nullptr, bool intrinsic = false);
 
 //! The whole multi-resolution solve: random tangent directions at level 0 from
 //! std::mt19937_64(seed), restricted up the hierarchy, then from the coarsest level down:

@@ -180,8 +180,8 @@ std::vector<LevelFrames> framesOnLevels(const FieldHierarchyLevels& h, const Dir
 // Coarse to fine: at the coarsest level every origin starts at its vertex; each level is
 // smoothed and hands its lattices to its children (the parent's origin on the child's plane,
 // moved to the lattice point nearest the child).
-std::vector<Vec3> solveOnHierarchy(const FieldHierarchyLevels& h, const std::vector<LevelFrames>& frames,
-                                   double spacing, int iterations, std::uint64_t seed)
+std::vector<Vec3> solveOnHierarchy(const FieldHierarchyLevels& h, const std::vector<LevelFrames>& frames, double spacing,
+                                   int iterations, std::uint64_t seed)
 {
     const int levels = static_cast<int>(h.levels.size());
     // The seed shifts the coarsest lattices by a random fraction of a cell (a seeded,
@@ -257,8 +257,8 @@ void facePoints(const TriMesh& surface, int f, const LevelFrames& frames, const 
 }
 
 // The lattice points over the surface, given each vertex's lattice origin.
-std::vector<Vec3> latticePoints(const TriMesh& surface, const LevelFrames& frames, const std::vector<Vec3>& origin,
-                                double rho, int* candidateCount, std::vector<int>& sampleFaces)
+std::vector<Vec3> latticePoints(const TriMesh& surface, const LevelFrames& frames, const std::vector<Vec3>& origin, double rho,
+                                int* candidateCount, std::vector<int>& sampleFaces)
 {
     // Every face's points in face order (thread-count independent): counted first, then written
     // at their face's offset, so no per-face container is allocated.
@@ -291,7 +291,8 @@ std::vector<Vec3> latticePoints(const TriMesh& surface, const LevelFrames& frame
         samples.push_back(Vec3::Zero());
         members.push_back(0);
         // The face that gave this candidate (faces' candidates are in face order).
-        sampleFaces.push_back(static_cast<int>(std::upper_bound(first.begin(), first.end(), static_cast<int>(i)) - first.begin()) - 1);
+        sampleFaces.push_back(
+            static_cast<int>(std::upper_bound(first.begin(), first.end(), static_cast<int>(i)) - first.begin()) - 1);
         // The candidates within the radius, nearest first, equal distances in the order the
         // search meets them: the order of a k-nearest search (which ranks them so), at the cost
         // of a radius search (~3 found instead of 16 asked for).
@@ -339,7 +340,9 @@ std::vector<Vec3> latticeSamples(const TriMesh& surface, const DirectionField& f
     for (r.passes = 1; r.passes <= params.maxPasses; ++r.passes) {
         int candidates = 0;
         faces.clear();
-        std::vector<Vec3> points = latticePoints(surface, frames[0], solveOnHierarchy(h, frames, spacing, params.iterations, params.seed), spacing, &candidates, faces);
+        std::vector<Vec3> points =
+            latticePoints(surface, frames[0], solveOnHierarchy(h, frames, spacing, params.iterations, params.seed), spacing,
+                          &candidates, faces);
         const double ratio = double(points.size()) / count;
         if (samples.empty() || std::abs(double(points.size()) - count) < std::abs(double(samples.size()) - count)) {
             samples.swap(points);

@@ -32,11 +32,11 @@ struct LatticeParams {
 };
 
 struct LatticeReport {
-    int levels = 0;        //!< hierarchy levels the position field was smoothed on
-    double spacing = 0;    //!< edge length ρ of the lattice kept
-    int passes = 0;        //!< lattices solved (1 to LatticeParams::maxPasses)
-    int candidates = 0;    //!< lattice points found from the face corners before merging (lattice kept)
-    int samples = 0;       //!< lattice points after merging (the samples returned)
+    int levels = 0;      //!< hierarchy levels the position field was smoothed on
+    double spacing = 0;  //!< edge length ρ of the lattice kept
+    int passes = 0;      //!< lattices solved (1 to LatticeParams::maxPasses)
+    int candidates = 0;  //!< lattice points found from the face corners before merging (lattice kept)
+    int samples = 0;     //!< lattice points after merging (the samples returned)
 };
 
 //! The lattice point of {origin + spacing·(a·d + b·R60·d)} (d, R60·d ⟂ n, |d| = 1) nearest to

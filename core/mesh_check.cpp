@@ -37,7 +37,6 @@ std::string point(const Vec3& p)
 
 std::string vertexAt(const TriMesh& input, int v) { return std::to_string(v) + " " + point(input.vertices[v]); }
 
-
 }  // namespace
 
 TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
@@ -56,7 +55,8 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     for (const Face& t : input.faces)
         for (int c : t) {
             if (!input.vertices[c].allFinite())
-                throw InvalidInputError("vertex " + std::to_string(c) + " has a non-finite coordinate " + point(input.vertices[c]));
+                throw InvalidInputError("vertex " + std::to_string(c) + " has a non-finite coordinate " +
+                                        point(input.vertices[c]));
             referenced[c] = 1;
         }
 
@@ -127,7 +127,8 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
         for (int e = 0; e < edges.edgeCount(); ++e)
             if (edges.isNonManifold(e) && nonManifold++ == 0) first = e;
         if (nonManifold > 0)
-            throw InvalidInputError(std::to_string(nonManifold) + " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
+            throw InvalidInputError(std::to_string(nonManifold) +
+                                    " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
                                     vertexAt(input, edges.ends[first][0]) + " and " + vertexAt(input, edges.ends[first][1]));
     }
 
@@ -137,16 +138,19 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     const std::vector<int> partner = glueTwoSidedEdges(edges, faceCount);
     const Orientation orientation = orientByWalk(faces, partner, [&](int h) {
         const int g = partner[h] / 3, a = faces[h / 3][h % 3], b = faces[h / 3][(h % 3 + 1) % 3];
-        throw InvalidInputError("a connected component is not orientable (like a Moebius strip, no consistent orientation "
-                                "exists): input faces " + std::to_string(faceOrigin[h / 3]) + " and " +
-                                std::to_string(faceOrigin[g]) + " disagree across the edge between vertices " +
-                                vertexAt(input, std::min(a, b)) + " and " + vertexAt(input, std::max(a, b)));
+        throw InvalidInputError(
+            "a connected component is not orientable (like a Moebius strip, no consistent orientation "
+            "exists): input faces " +
+            std::to_string(faceOrigin[h / 3]) + " and " + std::to_string(faceOrigin[g]) +
+            " disagree across the edge between vertices " + vertexAt(input, std::min(a, b)) + " and " +
+            vertexAt(input, std::max(a, b)));
     });
     report.components = orientation.components;
     report.componentAreas.assign(report.components, 0.0);
     for (int f = 0; f < faceCount; ++f) {
         const Face& t = faces[f];
-        report.componentAreas[orientation.component[f]] += triangleArea(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
+        report.componentAreas[orientation.component[f]] +=
+            triangleArea(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
     }
 
     // 5. Non-manifold vertices: corners of the faces around a vertex are joined across the
@@ -189,7 +193,8 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     for (const Face& t : faces) clean.faces.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
 
     if (report.mergedDuplicateVertices > 0)
-        report.information.push_back("merged " + std::to_string(report.mergedDuplicateVertices) + " duplicate vertices (same coordinates)");
+        report.information.push_back("merged " + std::to_string(report.mergedDuplicateVertices) +
+                                     " duplicate vertices (same coordinates)");
     if (report.removedUnreferencedVertices > 0)
         report.information.push_back("removed " + std::to_string(report.removedUnreferencedVertices) + " unreferenced vertices");
     if (report.removedDegenerateFaces > 0)
@@ -207,8 +212,8 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
         const double total = std::accumulate(report.componentAreas.begin(), report.componentAreas.end(), 0.0);
         const double smallest = *std::min_element(report.componentAreas.begin(), report.componentAreas.end());
         std::ostringstream s;
-        s << "the mesh has " << report.components << " connected components (kept; the smallest has "
-          << std::setprecision(3) << (total > 0 ? 100.0 * smallest / total : 0.0) << " % of the area)";
+        s << "the mesh has " << report.components << " connected components (kept; the smallest has " << std::setprecision(3)
+          << (total > 0 ? 100.0 * smallest / total : 0.0) << " % of the area)";
         report.information.push_back(s.str());
     }
     return clean;

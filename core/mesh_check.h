@@ -10,7 +10,7 @@
 namespace fieldcvt {
 
 struct InputReport {
-    int mergedDuplicateVertices = 0;     //!< referenced vertices merged into an earlier one at the same coordinates
+    int mergedDuplicateVertices = 0;  //!< referenced vertices merged into an earlier one at the same coordinates
     int removedUnreferencedVertices = 0;
     int removedDegenerateFaces = 0;      //!< repeated corner or zero area (needle faces of non-zero area are kept)
     int removedDuplicateFaces = 0;       //!< same three corners as an earlier face

@@ -32,8 +32,8 @@ void checkFaceIndices(const TriMesh& mesh, const char* who)
         for (int k = 0; k < 3; ++k)
             if (mesh.faces[f][k] < 0 || mesh.faces[f][k] >= vertexCount)
                 throw InvalidInputError(std::string(who) + ": face " + std::to_string(f) + " refers to vertex " +
-                                        std::to_string(mesh.faces[f][k]) + ", the mesh has " +
-                                        std::to_string(vertexCount) + " vertices");
+                                        std::to_string(mesh.faces[f][k]) + ", the mesh has " + std::to_string(vertexCount) +
+                                        " vertices");
 }
 
 //! A face that repeats a vertex index has no proper edges; the edge structure ignores it.
@@ -172,8 +172,7 @@ std::vector<Vec3> surfaceSamples(const TriMesh& mesh, int randomCount, std::uint
         // Uniform point in the triangle: (1 - sqrt r1, sqrt r1 (1 - r2), sqrt r1 r2).
         const double s = std::sqrt(unitUniform(rng)), r2 = unitUniform(rng);
         const Face& t = mesh.faces[order[k]];
-        samples.push_back((1.0 - s) * mesh.vertices[t[0]] + s * (1.0 - r2) * mesh.vertices[t[1]] +
-                          s * r2 * mesh.vertices[t[2]]);
+        samples.push_back((1.0 - s) * mesh.vertices[t[0]] + s * (1.0 - r2) * mesh.vertices[t[1]] + s * r2 * mesh.vertices[t[2]]);
     }
     return samples;
 }
@@ -274,8 +273,7 @@ TopologySummary computeTopology(const TriMesh& mesh)
         for (int c : vertexComponents) ++componentVertices[c];
     }
 
-    std::vector<int> componentEdges(componentCount, 0), componentFaces(componentCount, 0),
-        componentLoops(componentCount, 0);
+    std::vector<int> componentEdges(componentCount, 0), componentFaces(componentCount, 0), componentLoops(componentCount, 0);
     for (int f = 0; f < faceCount; ++f)
         if (component[f] >= 0) ++componentFaces[component[f]];
     for (int e = 0; e < edgeCount; ++e) {
@@ -400,7 +398,6 @@ double v6Percent(const TriMesh& mesh)
     return v6;
 }
 
-
 double boundaryDistance(const TriMesh& mesh, const TriMesh& reference)
 {
     const double diagonal = boundingBoxDiagonal(reference);
@@ -464,7 +461,7 @@ DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, i
         int hint = -1;
         bool hintOnMesh = false;
         for (long long i = c * kChunk, end = std::min(total, (c + 1) * kChunk); i < end; ++i) {
-            const bool onReference = i < meshCount;  // a mesh sample queried on the reference
+            const bool onReference = i < meshCount;    // a mesh sample queried on the reference
             if (onReference == hintOnMesh) hint = -1;  // the hint is a face of the other mesh
             hintOnMesh = !onReference;
             const ClosestPoint cp = onReference ? referenceTree->closest(meshSamples[i], hint)

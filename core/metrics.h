@@ -8,15 +8,15 @@ namespace fieldcvt {
 
 //! Topology of a triangle mesh, from its edge structure.
 struct TopologySummary {
-    int vertices = 0;          //!< referenced vertices
+    int vertices = 0;  //!< referenced vertices
     int faces = 0;
     int edges = 0;
-    int components = 0;        //!< connected components (through shared edges)
+    int components = 0;  //!< connected components (through shared edges)
     int boundaryLoops = 0;
-    int nonManifoldEdges = 0;  //!< edges with more than two faces
-    int nonManifoldVertices = 0; //!< vertices whose faces form more than one fan
-    bool orientable = true;    //!< faces consistently oriented across every manifold edge
-    int genus = 0;             //!< sum over components of (2 - chi - b) / 2; meaningful if manifold
+    int nonManifoldEdges = 0;     //!< edges with more than two faces
+    int nonManifoldVertices = 0;  //!< vertices whose faces form more than one fan
+    bool orientable = true;       //!< faces consistently oriented across every manifold edge
+    int genus = 0;                //!< sum over components of (2 - chi - b) / 2; meaningful if manifold
     bool manifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
 };
 

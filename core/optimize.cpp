@@ -21,8 +21,8 @@ constexpr double kUnevenFraction = 0.01;
 
 // Moves the seeds listed in `indices` to random points of the surface, ∝ area × μ (density.h),
 // all drawn in one pass over the faces.
-void moveToRandomPoints(const EnergyFunction& energy, const TriMesh& surface, const std::vector<int>& indices,
-                        std::uint64_t seed, std::vector<Vec3>& seeds)
+void moveToRandomPoints(const EnergyFunction& energy, const TriMesh& surface, const std::vector<int>& indices, std::uint64_t seed,
+                        std::vector<Vec3>& seeds)
 {
     if (indices.empty()) return;
     const std::vector<Vec3> points = sampleSurface(surface, static_cast<int>(indices.size()), seed, energy.faceDensity());
@@ -30,8 +30,7 @@ void moveToRandomPoints(const EnergyFunction& energy, const TriMesh& surface, co
 }
 }  // namespace
 
-void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations,
-                     std::uint64_t seed)
+void lloydRelaxation(EnergyFunction& energy, const TriMesh& surface, std::vector<Vec3>& seeds, int iterations, std::uint64_t seed)
 {
     Eigen::VectorXd x, gradient;
     std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
@@ -169,8 +168,7 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
             }
         }
     }
-    if (objective.best.size() == x.size() && objective.bestValue < std::numeric_limits<double>::infinity())
-        x = objective.best;
+    if (objective.best.size() == x.size() && objective.bestValue < std::numeric_limits<double>::infinity()) x = objective.best;
     seeds = unflatten(x);
     return stats;
 }

@@ -24,10 +24,10 @@ struct LbfgsParams {
 };
 
 struct OptimizeStats {
-    int iterations = 0;           //!< L-BFGS iterations done
-    int restarts = 0;             //!< line-search failures recovered by a restart
-    bool stalled = false;         //!< ended early: two restarts in a row without progress
-    std::vector<double> energies; //!< E_tot after each restart segment's end, and at the end
+    int iterations = 0;            //!< L-BFGS iterations done
+    int restarts = 0;              //!< line-search failures recovered by a restart
+    bool stalled = false;          //!< ended early: two restarts in a row without progress
+    std::vector<double> energies;  //!< E_tot after each restart segment's end, and at the end
     std::vector<std::string> warnings;
 };
 

@@ -164,13 +164,15 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
     for (const auto& t : faces) result.mesh.faces.push_back({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
     result.splitVertices = splitNonManifoldVertices(result.mesh, result.seedOfVertex, &result.faceOfVertex);
     if (result.splitVertices > 0)
-        result.warnings.push_back(std::to_string(result.splitVertices) +
-                                  " output vertices joined separate fans of faces (a restricted cell in several pieces: thin parts or "
-                                  "near-touching sheets) and were split, one vertex per fan");
+        result.warnings.push_back(
+            std::to_string(result.splitVertices) +
+            " output vertices joined separate fans of faces (a restricted cell in several pieces: thin parts or "
+            "near-touching sheets) and were split, one vertex per fan");
 
     if (result.removedFaces > 0)
-        result.warnings.push_back("removed " + std::to_string(result.removedFaces) +
-                                  " restricted Delaunay faces on non-manifold edges (sampling too coarse for the input's detail)");
+        result.warnings.push_back(
+            "removed " + std::to_string(result.removedFaces) +
+            " restricted Delaunay faces on non-manifold edges (sampling too coarse for the input's detail)");
     return result;
 }
 

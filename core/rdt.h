@@ -16,10 +16,10 @@ struct RdtResult {
     //! Per output vertex, the input face its closest point lies on (-1: placed on a piece of its
     //! cell instead): a hint for later closest-point queries at the vertex.
     std::vector<int> faceOfVertex;
-    int droppedSeeds = 0;           //!< samples in no triangle (empty or isolated cells)
-    int removedFaces = 0;           //!< faces removed to keep the output edge-manifold
-    int splitVertices = 0;          //!< extra vertices made by splitting non-manifold vertices
-    int multiPieceSeeds = 0;        //!< samples whose restricted cell is in several pieces (one vertex each)
+    int droppedSeeds = 0;     //!< samples in no triangle (empty or isolated cells)
+    int removedFaces = 0;     //!< faces removed to keep the output edge-manifold
+    int splitVertices = 0;    //!< extra vertices made by splitting non-manifold vertices
+    int multiPieceSeeds = 0;  //!< samples whose restricted cell is in several pieces (one vertex each)
     //! Lens pieces dropped: a piece of a cell across the border of two other cells only (a fold
     //! of the input or a thin part crossing their Voronoi edge twice), whose two faces are the same
     //! triangle with both orientations; kept, they would tear the edge of the two cells open.
@@ -49,6 +49,5 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::arra
 //! which only speeds the queries up (ClosestPointTree::closest's hint: the same answers).
 RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const ClosestPointTree& surface,
                      const std::vector<int>& seedFaceHints = {});
-
 
 }  // namespace fieldcvt

@@ -28,7 +28,10 @@ private:
 
 }  // namespace
 
-std::string vertexCountRange() { return "between " + std::to_string(kMinVertexCount) + " and " + std::to_string(kMaxVertexCount); }
+std::string vertexCountRange()
+{
+    return "between " + std::to_string(kMinVertexCount) + " and " + std::to_string(kMaxVertexCount);
+}
 
 VertexCountFromLength vertexCountForLength(double area, double length, const std::string& parameter)
 {
@@ -38,9 +41,11 @@ VertexCountFromLength vertexCountForLength(double area, double length, const std
         throw InvalidInputError(text);
     }
     const double wanted = 2.0 * area / (std::sqrt(3.0) * length * length);
-    std::snprintf(text, sizeof text, "%s %g on a surface of area %g gives %.3g vertices", parameter.c_str(), length, area, wanted);
+    std::snprintf(text, sizeof text, "%s %g on a surface of area %g gives %.3g vertices", parameter.c_str(), length, area,
+                  wanted);
     if (!std::isfinite(wanted) || wanted > kMaxVertexCount)
-        throw InvalidInputError(text + std::string("; the vertex count must be ") + vertexCountRange() + ": choose a longer edge");
+        throw InvalidInputError(text + std::string("; the vertex count must be ") + vertexCountRange() +
+                                ": choose a longer edge");
     VertexCountFromLength out;
     out.vertexCount = static_cast<int>(std::lround(wanted));
     if (out.vertexCount < kMinVertexCount) {
@@ -66,7 +71,8 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
             fail(names.vertexCount, vertexCountRange(), std::to_string(p.vertexCount));
     } else {
         if (p.initialSamples.size() < 4)
-            throw InvalidInputError("at least 4 initial samples are needed (got " + std::to_string(p.initialSamples.size()) + ")");
+            throw InvalidInputError("at least 4 initial samples are needed (got " + std::to_string(p.initialSamples.size()) +
+                                    ")");
         for (const Vec3& x : p.initialSamples)
             if (!x.allFinite()) throw InvalidInputError("an initial sample has a NaN or infinite coordinate");
     }

@@ -91,8 +91,8 @@ struct RemeshParams {
     //! lowest V6% up on every row, the cylinder's interior all valence 6. The seed sets the
     //! lattice's phase (LatticeParams::seed) and the field's random initial directions.
     bool latticeStart = true;
-    std::uint64_t seed = 1;        //!< seed of the initial sampling and of the field
-    int threads = 0;               //!< OpenMP threads, 0 = one per core that no other task holds (thread_budget.h)
+    std::uint64_t seed = 1;  //!< seed of the initial sampling and of the field
+    int threads = 0;         //!< OpenMP threads, 0 = one per core that no other task holds (thread_budget.h)
     //! Wall-clock budget of the optimisation (Lloyd, CVT, FCVT) in seconds, 0 = none. When it
     //! runs out, the output is made from the best samples so far and a warning says so.
     double timeLimitSeconds = 0;
@@ -165,7 +165,6 @@ struct ParameterNames {
 //! one line naming the parameter as `names` says, its range and the value given.
 void checkRemeshParams(const RemeshParams& params, const ParameterNames& names = {});
 
-
 //! Energies after one L-BFGS step (an evaluation that lowered E_tot) or one Lloyd step.
 struct EnergyRecord {
     std::string phase;  //!< "lloyd", "cvt" or "fcvt"
@@ -180,14 +179,14 @@ struct StageTime {
 };
 
 struct RemeshResult {
-    TriMesh mesh;                        //!< the restricted Delaunay triangulation
-    int evaluations = 0;                 //!< energy + gradient evaluations
-    std::vector<StageTime> stageTimes;   //!< per-stage wall time, in pipeline order
+    TriMesh mesh;                       //!< the restricted Delaunay triangulation
+    int evaluations = 0;                //!< energy + gradient evaluations
+    std::vector<StageTime> stageTimes;  //!< per-stage wall time, in pipeline order
     double totalSeconds = 0;
-    QualityMetrics metrics;              //!< Table 2 figures of mesh (d_* against the input)
-    TopologySummary inputTopology;       //!< genus / boundary loops / components of the input
-    TopologySummary outputTopology;      //!< the same for the output
-    std::vector<std::string> warnings;   //!< e.g. topology not recovered, solver restarts
+    QualityMetrics metrics;             //!< Table 2 figures of mesh (d_* against the input)
+    TopologySummary inputTopology;      //!< genus / boundary loops / components of the input
+    TopologySummary outputTopology;     //!< the same for the output
+    std::vector<std::string> warnings;  //!< e.g. topology not recovered, solver restarts
     //! The first inputWarnings of `warnings` are the input check's and the repair's (the stage
     //! that ran first), for a log in stage order.
     int inputWarnings = 0;

@@ -29,7 +29,7 @@ constexpr double kCornerSpacing = 2.0;
 
 // The user's feature edges, from input vertex indices to the cleaned surface's.
 std::vector<std::array<int, 2>> featureEdgesOnSurface(const std::vector<std::array<int, 2>>& edges,
-                                                     const std::vector<int>& cleanIndex)
+                                                      const std::vector<int>& cleanIndex)
 {
     std::vector<std::array<int, 2>> mapped;
     for (const auto& [a, b] : edges) {
@@ -91,14 +91,16 @@ void onEvaluation(RemeshRun& run, const EnergyValue& value)
     }
     const double fraction = std::min(1.0, run.energy->evaluations() / run.expectedEvaluations);
     const RemeshParams& p = run.params;
-    const int budget = run.phase == Phase::Lloyd ? run.lloydSteps
-                     : run.phase == Phase::Cvt   ? p.cvtIterations
-                     : run.phase == Phase::Fcvt  ? p.fcvtIterations : 0;
+    const int budget = run.phase == Phase::Lloyd  ? run.lloydSteps
+                       : run.phase == Phase::Cvt  ? p.cvtIterations
+                       : run.phase == Phase::Fcvt ? p.fcvtIterations
+                                                  : 0;
     if (run.phase != run.stepPhase) run.stepPhase = run.phase, run.steps = 0;
     run.steps += accepted;
     const std::string name = phaseName(run.phase);
-    run.pipeline.report(budget > 0 ? name + " " + std::to_string(std::min(run.steps, budget)) + "/" + std::to_string(budget) : name,
-                        5 + 85 * fraction);
+    run.pipeline.report(
+        budget > 0 ? name + " " + std::to_string(std::min(run.steps, budget)) + "/" + std::to_string(budget) : name,
+        5 + 85 * fraction);
     if (p.timeLimitSeconds > 0 && secondsSince(run.start) > p.timeLimitSeconds) throw TimeLimitReached();
 }
 
@@ -128,8 +130,8 @@ void checkOutputPrecision(RemeshResult& result, bool inFloat)
     double offset = 0;
     for (const Vec3& p : mesh.vertices) offset = std::max(offset, p.cwiseAbs().maxCoeff());
     // The spacing of representable coordinates at the largest one.
-    const double resolution = inFloat ? double(std::nextafter(float(offset), HUGE_VALF) - float(offset))
-                                      : std::nextafter(offset, HUGE_VAL) - offset;
+    const double resolution =
+        inFloat ? double(std::nextafter(float(offset), HUGE_VALF) - float(offset)) : std::nextafter(offset, HUGE_VAL) - offset;
     // An edge of 256 grid steps still gives angles within about half a degree. Every face has
     // an edge of at least its share of the area's square root: most meshes stop here, unsorted.
     const double area = surfaceArea(mesh);
@@ -137,8 +139,9 @@ void checkOutputPrecision(RemeshResult& result, bool inFloat)
     const double meanEdge = meanEdgeLength(mesh);
     if (!(meanEdge < 256 * resolution)) return;
     std::vector<Vec3> sorted = mesh.vertices;
-    std::sort(sorted.begin(), sorted.end(),
-              [](const Vec3& a, const Vec3& b) { return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3); });
+    std::sort(sorted.begin(), sorted.end(), [](const Vec3& a, const Vec3& b) {
+        return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+    });
     int coincident = 0;
     for (size_t i = 1; i < sorted.size(); ++i) coincident += sorted[i] == sorted[i - 1];
     int zeroArea = 0;
@@ -192,7 +195,11 @@ void Pipeline::report(const std::string& stage, double percent)
 }
 
 RemeshRun::RemeshRun(const TriMesh& input_, const RemeshParams& params_, const Progress& progress, RemeshResult& result_)
-    : input(input_), params(params_), result(result_), pipeline(progress, result_), start(Clock::now()),
+    : input(input_),
+      params(params_),
+      result(result_),
+      pipeline(progress, result_),
+      start(Clock::now()),
       sampleCount(params_.initialSamples.empty() ? params_.vertexCount : static_cast<int>(params_.initialSamples.size()))
 {
 }
@@ -221,7 +228,8 @@ void findFeatureLines(RemeshRun& run)
     const std::vector<std::array<int, 2>> userEdges = featureEdgesOnSurface(run.params.featureEdges, run.cleanIndex);
     run.features = detectFeatures(run.surface, run.params.featureAngleDegrees, userEdges, &ignored, kCornerSpacing);
     if (ignored > 0)
-        run.result.warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
+        run.result.warnings.push_back(std::to_string(ignored) +
+                                      " of the given feature edges are not edges of the mesh and were ignored");
 }
 
 void chooseOptimisationSurface(RemeshRun& run)
@@ -253,7 +261,8 @@ void chooseOptimisationSurface(RemeshRun& run)
                 });
             // The same feature edges (both ends kept, so still edges), corners found again.
             std::vector<std::array<int, 2>> edges;
-            for (const auto& [a, b] : run.features.edges) edges.push_back({run.coarse.coarseVertex[a], run.coarse.coarseVertex[b]});
+            for (const auto& [a, b] : run.features.edges)
+                edges.push_back({run.coarse.coarseVertex[a], run.coarse.coarseVertex[b]});
             run.features = detectFeatures(run.coarse.mesh, 0, edges, nullptr, kCornerSpacing);
         });
     }
@@ -414,7 +423,7 @@ void extractMesh(RemeshRun& run)
         options.triangles = true;
         const RvdResult& rvd = run.energy->diagram(run.seeds, options);
         // On cell pieces (multi-nerve RDT); the samples' frame faces are hints for their closest points.
-        const std::vector<int>& hints = run.energy->lastFrameFaces(), none;
+        const std::vector<int>&hints = run.energy->lastFrameFaces(), none;
         RdtResult rdt = extractRdt(run.seeds, rvd, *run.tree, hints.size() == run.seeds.size() ? hints : none);
         run.result.warnings.insert(run.result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         run.result.mesh = std::move(rdt.mesh);
@@ -489,10 +498,10 @@ void measure(RemeshRun& run)
         if (!out.manifold()) result.warnings.push_back("the output is not manifold");
         if (out.genus != in.genus || out.boundaryLoops != in.boundaryLoops || out.components != in.components)
             result.warnings.push_back("topology not recovered at this vertex count: input genus " + std::to_string(in.genus) +
-                                      ", " + std::to_string(in.boundaryLoops) + " boundary loops, " + std::to_string(in.components) +
-                                      " components; output genus " + std::to_string(out.genus) + ", " +
-                                      std::to_string(out.boundaryLoops) + " boundary loops, " + std::to_string(out.components) +
-                                      " components (use more vertices)");
+                                      ", " + std::to_string(in.boundaryLoops) + " boundary loops, " +
+                                      std::to_string(in.components) + " components; output genus " + std::to_string(out.genus) +
+                                      ", " + std::to_string(out.boundaryLoops) + " boundary loops, " +
+                                      std::to_string(out.components) + " components (use more vertices)");
     });
 }
 

@@ -84,7 +84,7 @@ struct RemeshRun {
     // chooseDensity: the CVT density per face of the optimisation surface (eq. 1), empty = uniform.
     std::vector<double> rho;
     // setUpEnergy: the plan of the optimisation and its energy.
-    bool useField = false;       //!< E_field is used (FCVT iterations with lambda > 0)
+    bool useField = false;        //!< E_field is used (FCVT iterations with lambda > 0)
     std::vector<Segment> border;  //!< the optimisation surface's own border edges
     bool latticeStart = false;    //!< start from the field-aligned lattice (lattice.h)
     int lloydSteps = 0;
@@ -97,7 +97,7 @@ struct RemeshRun {
     // placeSamples, optimiseSamples.
     Phase phase = Phase::Sampling;
     double best = std::numeric_limits<double>::infinity();  //!< lowest E_tot of the current phase
-    Phase stepPhase = Phase::Sampling;                       //!< the phase whose steps `steps` counts
+    Phase stepPhase = Phase::Sampling;                      //!< the phase whose steps `steps` counts
     int steps = 0;
     std::vector<Vec3> seeds;
     std::vector<SampleConstraint> sampleRoles;

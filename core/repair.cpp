@@ -123,8 +123,10 @@ int insertTJunctions(const std::vector<Vec3>& pos, std::vector<Face>& faces, dou
             int from = a;
             for (size_t i = 0; i < points[f].size(); ++i) {
                 const int p = points[f][i].second;
-                if (i == 0) faces[f] = {from, p, c};
-                else faces.push_back({from, p, c});
+                if (i == 0)
+                    faces[f] = {from, p, c};
+                else
+                    faces.push_back({from, p, c});
                 from = p;
                 ++inserted;
             }
@@ -233,8 +235,10 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
             // Same cyclic order as the kept face: a duplicate; otherwise its opposite.
             const Face& other = kept[it->second];
             const int k = cornerOf(other, t[0]);
-            if (other[(k + 1) % 3] == t[1]) ++report.removedDuplicateFaces;
-            else ++report.removedOppositeFaces;
+            if (other[(k + 1) % 3] == t[1])
+                ++report.removedDuplicateFaces;
+            else
+                ++report.removedOppositeFaces;
         }
         faces.swap(kept);
     }
@@ -302,7 +306,8 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
             }
             std::sort(ends.begin(), ends.end());
             for (size_t i = 0, j; i < ends.size(); i = j) {
-                for (j = i + 1; j < ends.size() && ends[j].first == ends[i].first; ++j) {}
+                for (j = i + 1; j < ends.size() && ends[j].first == ends[i].first; ++j) {
+                }
                 if (j - i == 1 || (j - i == 2 && partner[ends[i].second] == ends[i + 1].second)) continue;
                 int keep = ends[i].second;  // a glued pair if there is one, else the first face
                 for (size_t m = i; m < j; ++m)
@@ -387,7 +392,8 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
             out.vertices.push_back(input.vertices[v < n ? v : copySource[v - n]]);
         }
     for (int f = 0; f < faceCount; ++f)
-        if (keepFace[f]) out.faces.push_back({index[cornerVertex[3 * f]], index[cornerVertex[3 * f + 1]], index[cornerVertex[3 * f + 2]]});
+        if (keepFace[f])
+            out.faces.push_back({index[cornerVertex[3 * f]], index[cornerVertex[3 * f + 1]], index[cornerVertex[3 * f + 2]]});
     for (int v = 0; v < n; ++v) report.vertexMap[v] = referenced[v] ? index[rep[v]] : -1;
 
     auto note = [&](int count, const std::string& text) {
@@ -409,8 +415,8 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     note(report.removedOppositeFaces, "opposite duplicate faces removed (same corners, reversed)");
     note(report.nonManifoldEdges, "non-manifold edges (more than two faces) split into manifold sheets");
     if (report.nonOrientableComponents > 0)
-        note(report.nonOrientableComponents, "non-orientable components cut along a seam of " +
-                                                 std::to_string(report.seamEdges) + " edges into orientable pieces");
+        note(report.nonOrientableComponents, "non-orientable components cut along a seam of " + std::to_string(report.seamEdges) +
+                                                 " edges into orientable pieces");
     note(report.splitVertices, "vertices split into one vertex per fan (non-manifold vertices and the ends of cuts; " +
                                    std::to_string(report.addedVertexCopies) + " vertices added)");
     if (report.droppedComponents > 0) {
@@ -421,9 +427,9 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         note(report.droppedComponents, s.str());
     }
     if (report.keptSmallComponents > 0)
-        note(report.keptSmallComponents, "connected components get fewer than " + std::to_string(int(params.minComponentSamples)) +
-                                             " samples but hold over " + percent(params.keepAreaFraction) +
-                                             " of the area each: kept (use more vertices)");
+        note(report.keptSmallComponents, "connected components get fewer than " +
+                                             std::to_string(int(params.minComponentSamples)) + " samples but hold over " +
+                                             percent(params.keepAreaFraction) + " of the area each: kept (use more vertices)");
     return out;
 }
 

@@ -77,7 +77,6 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
 //! repairMesh, then prepareInput on the result (as repaired: without its exact-duplicate merge,
 //! which would undo the splits, nor its duplicate-face search); `input` of
 //! InputReport::cleanIndex is the original input. Repair notes come first in InputReport::notes.
-TriMesh repairAndPrepare(const TriMesh& input, const RepairParams& params, RepairReport& repair,
-                         InputReport& report);
+TriMesh repairAndPrepare(const TriMesh& input, const RepairParams& params, RepairReport& repair, InputReport& report);
 
 }  // namespace fieldcvt

@@ -170,7 +170,6 @@ struct alignas(64) Scratch {
     std::vector<uint32_t> atCovered;  // clipToCell: the seeds visited at the largest distance so far
 };
 
-
 std::array<int, 3> canonicalTriangle(int a, int b, int c)
 {
     // Rotate so the smallest index comes first; the cyclic order (orientation) is kept.
@@ -204,15 +203,16 @@ struct RestrictedVoronoiDiagram::Impl {
     mutable std::unique_ptr<std::once_flag> treeBuilt;
     const PointTree& seedTree() const
     {
-        std::call_once(*treeBuilt, [this] { tree = std::make_unique<PointTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)); });
+        std::call_once(*treeBuilt,
+                       [this] { tree = std::make_unique<PointTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)); });
         return *tree;
     }
     std::vector<uint32_t> neighbourIndex;  // n * kStoredNeighbours, nearest first, self excluded
     std::vector<double> neighbourDist2;
-    std::vector<char> duplicate;  // seed coincides with a lower-index seed: empty cell, no bisector
+    std::vector<char> duplicate;     // seed coincides with a lower-index seed: empty cell, no bisector
     std::vector<char> listDistinct;  // the stored neighbours of the seed are distinct seeds (no fill-up)
-    std::vector<int> vertexSeed;  // per input vertex: the seed whose cell contains it, -1 on a tie
-    std::vector<int> edgeStart;        // work space of the edge merge
+    std::vector<int> vertexSeed;     // per input vertex: the seed whose cell contains it, -1 on a tie
+    std::vector<int> edgeStart;      // work space of the edge merge
     std::vector<RvdEdge> edgeBuffer;
     int storedNeighbours = 0;
 
@@ -375,8 +375,8 @@ struct RestrictedVoronoiDiagram::Impl {
 
         // How far the seeds moved since the candidate lists were found.
         const int candidates0 = std::min(kCandidates, n - 1);
-        bool useCandidates = !rebuildCandidates && candidates0 == candidateCount && candidatePosition.size() == size_t(n) &&
-                             storedNeighbours > 0;
+        bool useCandidates =
+            !rebuildCandidates && candidates0 == candidateCount && candidatePosition.size() == size_t(n) && storedNeighbours > 0;
         double drift = 0;
         movers.clear();
         if (useCandidates) {
@@ -390,8 +390,10 @@ struct RestrictedVoronoiDiagram::Impl {
             double drift2 = 0;
             int over = 0;
             for (int i = 0; i < n; ++i) {
-                if (moveSquared[i] > moverMove2) ++over;
-                else drift2 = std::max(drift2, moveSquared[i]);
+                if (moveSquared[i] > moverMove2)
+                    ++over;
+                else
+                    drift2 = std::max(drift2, moveSquared[i]);
             }
             if (over > kMaxMovers) {  // the (kMaxMovers + 1)-th largest move bounds the others
                 moveOrder = moveSquared;
@@ -406,8 +408,8 @@ struct RestrictedVoronoiDiagram::Impl {
         }
         const bool buildCandidates = !useCandidates && candidates0 > storedNeighbours;
         // The previous candidate lists (distinct seeds) bound the new ones' radius, as above.
-        const bool previousCandidates = buildCandidates && candidates0 == candidateCount &&
-                                        candidateIndex.size() == static_cast<size_t>(n) * candidateCount;
+        const bool previousCandidates =
+            buildCandidates && candidates0 == candidateCount && candidateIndex.size() == static_cast<size_t>(n) * candidateCount;
         if (buildCandidates) {
             candidateCount = candidates0;
             candidatePosition = *seeds;
@@ -578,8 +580,10 @@ struct RestrictedVoronoiDiagram::Impl {
                 const double diff = p[k] - s[j][k];
                 d2 += diff * diff;
             }
-            if (d2 < best) second = best, best = d2, nearest = j;
-            else if (d2 < second) second = d2;
+            if (d2 < best)
+                second = best, best = d2, nearest = j;
+            else if (d2 < second)
+                second = d2;
         }
         if (nearest < 0 || second == best || duplicate[nearest]) return -1;
         return nearest;
@@ -620,7 +624,10 @@ struct RestrictedVoronoiDiagram::Impl {
         const int size = in.size;
         for (int k = 0; k < size; ++k) {
             side[k] = (in.point[k] - xi).dot(d) - half;  // > 0: nearer to x_j
-            if (side[k] > 0) anyOutside = true; else anyInside = true;
+            if (side[k] > 0)
+                anyOutside = true;
+            else
+                anyInside = true;
         }
         if (!anyOutside) return 0;
         if (!anyInside) return 2;
@@ -764,7 +771,8 @@ struct RestrictedVoronoiDiagram::Impl {
                 if (anyPiece) break;
                 if (nextCandidate >= candidates) {
                     if (treeQueried) break;
-                    candidates = static_cast<int>(seedTree().knnSearch(centroid.data(), kStartCandidates, candidate, candidateDist2));
+                    candidates =
+                        static_cast<int>(seedTree().knnSearch(centroid.data(), kStartCandidates, candidate, candidateDist2));
                     nextCandidate = 0;
                     treeQueried = true;
                 }
@@ -856,7 +864,8 @@ struct RestrictedVoronoiDiagram::Impl {
             const double area = 0.5 * nrm.dot((q1 - q0).cross(q2 - q0));
             mass += area;
             moment += area / 3.0 * (q0 + q1 + q2);
-            energy += area / 6.0 * (q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm() + q0.dot(q1) + q1.dot(q2) + q2.dot(q0));
+            energy +=
+                area / 6.0 * (q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm() + q0.dot(q1) + q1.dot(q2) + q2.dot(q0));
         }
         moment += mass * xi;
         if (!density.empty()) {
@@ -972,8 +981,10 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
             for (RvdEdge* r = first; r != last; ++r) {
                 RvdEdge* same = first;
                 while (same != w && same->j != r->j) ++same;
-                if (same != w) same->length += r->length;
-                else *w++ = *r;
+                if (same != w)
+                    same->length += r->length;
+                else
+                    *w++ = *r;
             }
             for (RvdEdge* r = first; r != w; ++r) {  // (not first + 1: `first` is null when no seed has an edge)
                 const RvdEdge moving = *r;
@@ -987,7 +998,8 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
         result.edges.resize(static_cast<size_t>(kept[n]));
 #pragma omp parallel for schedule(static)
         for (long long i = 0; i < static_cast<long long>(n); ++i)
-            std::copy(bucketed.begin() + start[i], bucketed.begin() + start[i] + (kept[i + 1] - kept[i]), result.edges.begin() + kept[i]);
+            std::copy(bucketed.begin() + start[i], bucketed.begin() + start[i] + (kept[i + 1] - kept[i]),
+                      result.edges.begin() + kept[i]);
     }
     result.pieceSeed.clear();
     result.piecePoint.clear();
@@ -1052,7 +1064,8 @@ void RestrictedVoronoiDiagram::Impl::buildPieces(RvdResult& result) const
             nearest[p] = fragments[g].distance2;
         } else {
             const int p = pieceOfRoot[root];  // the root comes first, so it is numbered
-            if (fragments[g].distance2 < nearest[p]) result.piecePoint[p] = fragments[g].point, nearest[p] = fragments[g].distance2;
+            if (fragments[g].distance2 < nearest[p])
+                result.piecePoint[p] = fragments[g].point, nearest[p] = fragments[g].distance2;
         }
     }
 
@@ -1071,11 +1084,13 @@ void RestrictedVoronoiDiagram::Impl::buildPieces(RvdResult& result) const
         for (const RawTriangle& raw : chunks[c].triangles) {
             std::array<int, 3> t;
             for (int k = 0; k < 3; ++k)
-                t[k] = raw.corner[k] >= 0 ? pieceOfRoot[find(chunkStart[c] + raw.corner[k])] : pieceNear(-1 - raw.corner[k], raw.face);
+                t[k] = raw.corner[k] >= 0 ? pieceOfRoot[find(chunkStart[c] + raw.corner[k])]
+                                          : pieceNear(-1 - raw.corner[k], raw.face);
             result.pieceTriangles.push_back(canonicalTriangle(t[0], t[1], t[2]));
         }
     std::sort(result.pieceTriangles.begin(), result.pieceTriangles.end());
-    result.pieceTriangles.erase(std::unique(result.pieceTriangles.begin(), result.pieceTriangles.end()), result.pieceTriangles.end());
+    result.pieceTriangles.erase(std::unique(result.pieceTriangles.begin(), result.pieceTriangles.end()),
+                                result.pieceTriangles.end());
     for (const std::array<int, 3>& t : result.pieceTriangles)
         result.triangles.push_back(canonicalTriangle(result.pieceSeed[t[0]], result.pieceSeed[t[1]], result.pieceSeed[t[2]]));
     std::sort(result.triangles.begin(), result.triangles.end());

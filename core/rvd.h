@@ -13,11 +13,11 @@
 namespace fieldcvt {
 
 struct RvdOptions {
-    bool edges = false;      //!< fill RvdResult::edges
+    bool edges = false;  //!< fill RvdResult::edges
     //! Fill RvdResult::triangles and the connected pieces of the cells (pieceSeed, piecePoint,
     //! pieceTriangles).
     bool triangles = false;
-    bool boundary = false;   //!< fill RvdResult::boundaryLength / boundaryMoment
+    bool boundary = false;  //!< fill RvdResult::boundaryLength / boundaryMoment
     //! Only the faces with a border edge (the cells' pieces elsewhere are skipped): the border
     //! figures are complete, mass / moment / energy only cover those faces.
     bool borderFacesOnly = false;

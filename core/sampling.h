@@ -15,8 +15,7 @@ std::vector<Vec3> sampleSurfaceUniform(const TriMesh& surface, int count, std::u
 //! `count` points distributed ∝ area × μ_f with μ_f = sqrt(ρ_f), ρ_f the CVT density of face f
 //! (density.h: the number of samples per unit area is ∝ μ, not ρ). Empty `faceDensity` gives
 //! exactly sampleSurfaceUniform's points.
-std::vector<Vec3> sampleSurface(const TriMesh& surface, int count, std::uint64_t seed,
-                                const std::vector<double>& faceDensity);
+std::vector<Vec3> sampleSurface(const TriMesh& surface, int count, std::uint64_t seed, const std::vector<double>& faceDensity);
 
 //! Maps a 64-bit random word to [0, 1) with 53 bits (platform-independent, unlike
 //! std::uniform_real_distribution).

@@ -87,7 +87,8 @@ struct Candidate {
 
 class Simplifier {
 public:
-    Simplifier(const TriMesh& input, const SimplifyParams& params) : params_(params), mesh_(checked(input, params).vertices, input.faces)
+    Simplifier(const TriMesh& input, const SimplifyParams& params)
+        : params_(params), mesh_(checked(input, params).vertices, input.faces)
     {
         const int n = input.vertexCount();
         locked_.assign(n, 0);
@@ -236,8 +237,10 @@ private:
         neighbours(to, ringTo_);
         int common = 0;
         for (size_t i = 0, j = 0; i < ringFrom_.size() && j < ringTo_.size();) {
-            if (ringFrom_[i] < ringTo_[j]) ++i;
-            else if (ringFrom_[i] > ringTo_[j]) ++j;
+            if (ringFrom_[i] < ringTo_[j])
+                ++i;
+            else if (ringFrom_[i] > ringTo_[j])
+                ++j;
             else {
                 if (ringFrom_[i] != opposite[0] && ringFrom_[i] != opposite[1]) return false;
                 ++common, ++i, ++j;
@@ -263,7 +266,8 @@ private:
             const double lengths = before.norm() * after.norm();
             if (!(lengths > 0) || before.dot(after) < kMinNormalCosine * lengths) return false;
             const double ratio = meanRatio(position(t[0]), position(t[1]), position(t[2]));
-            if (ratio < kMinMeanRatio && ratio < worstBefore * (1 - 1e-6)) return false;  // margin: equal shapes of a regular mesh
+            if (ratio < kMinMeanRatio && ratio < worstBefore * (1 - 1e-6))
+                return false;  // margin: equal shapes of a regular mesh
         }
         return true;
     }

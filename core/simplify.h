@@ -29,9 +29,9 @@ struct SimplifyParams {
 };
 
 struct SimplifyResult {
-    TriMesh mesh;                     //!< the coarse surface (same orientation)
-    std::vector<int> inputVertex;     //!< per coarse vertex: its index in the input
-    std::vector<int> coarseVertex;    //!< per input vertex: its coarse index, -1 if removed
+    TriMesh mesh;                   //!< the coarse surface (same orientation)
+    std::vector<int> inputVertex;   //!< per coarse vertex: its index in the input
+    std::vector<int> coarseVertex;  //!< per input vertex: its coarse index, -1 if removed
 };
 
 //! Simplifies a manifold, oriented triangle mesh towards params.targetFaces faces; keeps it

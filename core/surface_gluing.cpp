@@ -14,8 +14,7 @@ int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
 
 }  // namespace
 
-std::vector<int> exactDuplicateRepresentatives(const std::vector<Vec3>& points, const std::vector<char>& referenced,
-                                               int& merged)
+std::vector<int> exactDuplicateRepresentatives(const std::vector<Vec3>& points, const std::vector<char>& referenced, int& merged)
 {
     const int n = static_cast<int>(points.size());
     std::vector<int> rep(n);

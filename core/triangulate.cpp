@@ -203,8 +203,10 @@ PolygonShape triangulatePolygon(const std::vector<Vec3>& points, const std::vect
         if (triangulateByCdt(p, corners, faces)) return PolygonShape::Simple;
         // Not simple: ear clipping's best effort while it stays affordable.
         constexpr int kMaxBestEffortCorners = 4096;
-        if (n <= kMaxBestEffortCorners) clipEars(p, corners, faces);
-        else fan();
+        if (n <= kMaxBestEffortCorners)
+            clipEars(p, corners, faces);
+        else
+            fan();
         return PolygonShape::NotSimple;
     }
     const bool simple = isSimplePolygon(p);

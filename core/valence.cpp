@@ -29,8 +29,8 @@ void checkInput(const TriMesh& mesh, const std::vector<VertexRole>& roles, const
         for (int v : f)
             if (v < 0 || v >= n) throw InvalidInputError("optimizeValence: a face refers to a missing vertex");
     if (!roles.empty() && static_cast<int>(roles.size()) != n)
-        throw InvalidInputError("optimizeValence: " + std::to_string(roles.size()) + " vertex roles for " +
-                                std::to_string(n) + " vertices");
+        throw InvalidInputError("optimizeValence: " + std::to_string(roles.size()) + " vertex roles for " + std::to_string(n) +
+                                " vertices");
     if (surface.field && (surface.field->normals.size() != surface.input.vertices.size() ||
                           surface.field->directions.size() != surface.input.vertices.size()))
         throw InvalidInputError("optimizeValence: the field does not match the input surface");

@@ -23,8 +23,8 @@ enum class VertexRole : char {
 
 //! The defaults' measurements: docs/tuning.md, "ValenceParams::...".
 struct ValenceParams {
-    int maxRounds = 30;             //!< rounds of "choose per irregular vertex, apply the best non-conflicting"
-    int localSmoothing = 3;         //!< tangential smoothing steps around each applied operation
+    int maxRounds = 30;      //!< rounds of "choose per irregular vertex, apply the best non-conflicting"
+    int localSmoothing = 3;  //!< tangential smoothing steps around each applied operation
     //! An operation (or relaxation step) that leaves a smaller angle around it, and a smaller one
     //! than there was, is refused; after the relaxation, the corners of faces still under it move
     //! to raise the smallest angle around them (angle repair). 35: θ_min stays above ~32°.
@@ -49,7 +49,7 @@ struct ValenceParams {
 };
 
 struct ValenceStats {
-    double v6Before = 0, v6After = 0;                  //!< % of interior vertices of valence 6
+    double v6Before = 0, v6After = 0;                         //!< % of interior vertices of valence 6
     long long irregularityBefore = 0, irregularityAfter = 0;  //!< R (weighted, see borderWeight)
     int flips = 0, collapses = 0, splits = 0, rounds = 0;
     int verticesBefore = 0, verticesAfter = 0;
@@ -60,9 +60,9 @@ struct ValenceStats {
 
 //! The input surface the optimised mesh lives on (all at the working scale).
 struct ValenceSurface {
-    const TriMesh& input;                //!< the input surface
-    const ClosestPointTree& tree;        //!< closest points on `input`
-    std::vector<Segment> features;       //!< sharp feature lines (Feature vertices stay on them)
+    const TriMesh& input;                   //!< the input surface
+    const ClosestPointTree& tree;           //!< closest points on `input`
+    std::vector<Segment> features;          //!< sharp feature lines (Feature vertices stay on them)
     const DirectionField* field = nullptr;  //!< 6-RoSy field on `input` for the final relaxation (null: none)
     //! The input's open border. A Free vertex that the mesh has on its border (a sample whose cell
     //! reached the border during the FCVT iterations) is put on it before it becomes Boundary;

@@ -13,8 +13,8 @@ namespace {
 std::string boxText(const Vec3& lo, const Vec3& hi)
 {
     std::ostringstream s;
-    s << "bounding box (" << lo.x() << ", " << lo.y() << ", " << lo.z() << ") to (" << hi.x() << ", " << hi.y() << ", "
-      << hi.z() << ")";
+    s << "bounding box (" << lo.x() << ", " << lo.y() << ", " << lo.z() << ") to (" << hi.x() << ", " << hi.y() << ", " << hi.z()
+      << ")";
     return s.str();
 }
 

@@ -84,10 +84,8 @@ double floatParam(const ParamValues& par, const char* key, double fallback)
 // (true = vertex quality); uniform when the script has neither.
 int densityChoice(const ParamValues& par)
 {
-    if (!par.hasParameter(kAdaptive))
-        return kDensityUniform;
-    if (par.isBool(kAdaptive))
-        return par.getBool(kAdaptive) ? kDensityVertexQuality : kDensityUniform;
+    if (!par.hasParameter(kAdaptive)) return kDensityUniform;
+    if (par.isBool(kAdaptive)) return par.getBool(kAdaptive) ? kDensityVertexQuality : kDensityUniform;
     return par.getEnum(kAdaptive);
 }
 
@@ -109,36 +107,27 @@ constexpr int kComputedFieldSources = 3;
 QStringList fieldSourceLabels(int count)
 {
     QStringList labels;
-    for (int i = 0; i < count; ++i)
-        labels << kFieldSources[i].label;
+    for (int i = 0; i < count; ++i) labels << kFieldSources[i].label;
     return labels;
 }
 
 int fieldSourceIndex(fieldcvt::FieldSource source)
 {
     for (int i = 0; i < kAllFieldSources; ++i)
-        if (kFieldSources[i].source == source)
-            return i;
+        if (kFieldSources[i].source == source) return i;
     return 0;
 }
 
-fieldcvt::Vec3 toVec3(const Point3m& p)
-{
-    return fieldcvt::Vec3(double(p[0]), double(p[1]), double(p[2]));
-}
+fieldcvt::Vec3 toVec3(const Point3m& p) { return fieldcvt::Vec3(double(p[0]), double(p[1]), double(p[2])); }
 
-Point3m toPoint3m(const fieldcvt::Vec3& v)
-{
-    return Point3m(Scalarm(v.x()), Scalarm(v.y()), Scalarm(v.z()));
-}
+Point3m toPoint3m(const fieldcvt::Vec3& v) { return Point3m(Scalarm(v.x()), Scalarm(v.y()), Scalarm(v.z())); }
 
 // A handle to the per-vertex Point3m attribute `name`, created if missing; an attribute of that
 // name but another type is replaced (vcg asserts on adding a name that exists).
 CMeshO::PerVertexAttributeHandle<Point3m> pointAttribute(CMeshO& cm, const char* name)
 {
     auto h = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<Point3m>(cm, name);
-    if (vcg::tri::Allocator<CMeshO>::IsValidHandle<Point3m>(cm, h))
-        return h;
+    if (vcg::tri::Allocator<CMeshO>::IsValidHandle<Point3m>(cm, h)) return h;
     vcg::tri::Allocator<CMeshO>::DeletePerVertexAttribute(cm, name);
     return vcg::tri::Allocator<CMeshO>::AddPerVertexAttribute<Point3m>(cm, name);
 }
@@ -150,8 +139,7 @@ CMeshO::PerVertexAttributeHandle<Point3m> pointAttribute(CMeshO& cm, const char*
 QString outputLayerName(const QString& inputLabel)
 {
     QString base = QFileInfo(inputLabel).completeBaseName();
-    if (base.isEmpty())
-        base = inputLabel;
+    if (base.isEmpty()) base = inputLabel;
     base.replace(QChar('.'), QChar('_'));
     return base + "_FCVT";
 }
@@ -171,17 +159,14 @@ QString applyValenceColours(const fieldcvt::TriMesh& mesh, MeshModel& layer)
     layer.updateDataMask(MeshModel::MM_VERTCOLOR);
     size_t i = 0;
     for (CVertexO& v : layer.cm.vert)
-        if (!v.IsD() && i < c.colours.size())
-            v.C() = c.colours[i++];
-    if (i != c.colours.size())
-        throw fieldcvt::Error("valence colours: vertex count mismatch");
+        if (!v.IsD() && i < c.colours.size()) v.C() = c.colours[i++];
+    if (i != c.colours.size()) throw fieldcvt::Error("valence colours: vertex count mismatch");
     return fcvt_plugin::valenceColourText(c);
 }
 
 // Feature lines from a face selection: the edges between a selected and an unselected face
 // (vertex indices of `mesh`, whose face i is the i-th live face, `selected[i]` its flag).
-std::vector<std::array<int, 2>> selectionBorder(const fieldcvt::TriMesh& mesh,
-                                                const std::vector<char>& selected)
+std::vector<std::array<int, 2>> selectionBorder(const fieldcvt::TriMesh& mesh, const std::vector<char>& selected)
 {
     std::map<std::pair<int, int>, std::pair<int, int>> edges;  // edge -> (faces, selected faces)
     for (size_t f = 0; f < mesh.faces.size(); ++f)
@@ -193,8 +178,7 @@ std::vector<std::array<int, 2>> selectionBorder(const fieldcvt::TriMesh& mesh,
         }
     std::vector<std::array<int, 2>> border;
     for (const auto& [edge, count] : edges)
-        if (count.second > 0 && count.second < count.first)
-            border.push_back({edge.first, edge.second});
+        if (count.second > 0 && count.second < count.first) border.push_back({edge.first, edge.second});
     return border;
 }
 
@@ -208,42 +192,35 @@ struct KeptData {
 // vertex the closest point on the input (`in`, whose vertex i is `inVerts[i]`) and barycentric
 // interpolation of its face's three corners. Normals are renormalised (a degenerate result keeps
 // the output's own normal).
-void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVertexO*>& inVerts,
-                        const KeptData& keep, CMeshO& out)
+void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVertexO*>& inVerts, const KeptData& keep,
+                        CMeshO& out)
 {
-    if (!keep.any() || in.faces.empty())
-        return;
+    if (!keep.any() || in.faces.empty()) return;
     const fieldcvt::ClosestPointTree tree(in);
     for (CVertexO& v : out.vert) {
-        if (v.IsD())
-            continue;
+        if (v.IsD()) continue;
         const fieldcvt::ClosestPoint cp = tree.closest(toVec3(v.cP()));
-        if (cp.face < 0)
-            continue;
+        if (cp.face < 0) continue;
         const fieldcvt::Face& f = in.faces[size_t(cp.face)];
         const CVertexO* c[3] = {inVerts[size_t(f[0])], inVerts[size_t(f[1])], inVerts[size_t(f[2])]};
         const double w[3] = {cp.barycentric.x(), cp.barycentric.y(), cp.barycentric.z()};
         if (keep.colour) {
             for (int ch = 0; ch < 4; ++ch) {
                 double x = 0;
-                for (int k = 0; k < 3; ++k)
-                    x += w[k] * double(c[k]->cC()[ch]);
+                for (int k = 0; k < 3; ++k) x += w[k] * double(c[k]->cC()[ch]);
                 v.C()[ch] = static_cast<unsigned char>(std::clamp(std::lround(x), 0L, 255L));
             }
         }
         if (keep.quality) {
             double q = 0;
-            for (int k = 0; k < 3; ++k)
-                q += w[k] * double(c[k]->cQ());
+            for (int k = 0; k < 3; ++k) q += w[k] * double(c[k]->cQ());
             v.Q() = static_cast<float>(q);
         }
         if (keep.normals) {
             fieldcvt::Vec3 n(0, 0, 0);
-            for (int k = 0; k < 3; ++k)
-                n += w[k] * toVec3(c[k]->cN());
+            for (int k = 0; k < 3; ++k) n += w[k] * toVec3(c[k]->cN());
             const double len = n.norm();
-            if (std::isfinite(len) && len > 1e-12)
-                v.N() = toPoint3m(n / len);
+            if (std::isfinite(len) && len > 1e-12) v.N() = toPoint3m(n / len);
         }
     }
 }
@@ -255,8 +232,7 @@ struct ParamList {
     void addParam(ParamDef p) { defs.push_back(std::move(p)); }
 };
 
-ParamDef makeParam(ParamDef::Type type, const char* name, double value, const QString& label,
-                   const QString& tooltip)
+ParamDef makeParam(ParamDef::Type type, const char* name, double value, const QString& label, const QString& tooltip)
 {
     ParamDef p;
     p.type = type;
@@ -278,15 +254,13 @@ ParamDef RichBool(const char* name, bool value, const QString& label, const QStr
 {
     return makeParam(ParamDef::Bool, name, value ? 1 : 0, label, tooltip);
 }
-ParamDef RichEnum(const char* name, int value, const QStringList& labels, const QString& label,
-                  const QString& tooltip)
+ParamDef RichEnum(const char* name, int value, const QStringList& labels, const QString& label, const QString& tooltip)
 {
     ParamDef p = makeParam(ParamDef::Enum, name, value, label, tooltip);
     p.enumLabels = labels;
     return p;
 }
-ParamDef RichAbsPerc(const char* name, float value, float min, float max, const QString& label,
-                     const QString& tooltip)
+ParamDef RichAbsPerc(const char* name, float value, float min, float max, const QString& label, const QString& tooltip)
 {
     ParamDef p = makeParam(ParamDef::AbsPerc, name, double(value), label, tooltip);
     p.min = double(min);
@@ -299,8 +273,7 @@ ParamDef advanced(ParamDef p)
     p.advanced = true;
     return p;
 }
-ParamDef RichMesh(const char* name, const MeshModel*, const MeshDocument*, const QString& label,
-                  const QString& tooltip)
+ParamDef RichMesh(const char* name, const MeshModel*, const MeshDocument*, const QString& label, const QString& tooltip)
 {
     return makeParam(ParamDef::Mesh, name, 0, label, tooltip);
 }
@@ -317,18 +290,16 @@ public:
 private:
     //! What the remeshing filter takes from the input layer besides the geometry.
     struct RemeshInputs {
-        bool densityFromQuality = false;  //!< adaptive: ρ = per-vertex quality
+        bool densityFromQuality = false;     //!< adaptive: ρ = per-vertex quality
         bool featuresFromSelection = false;  //!< feature lines = border of the face selection
-        bool colorIrregular = false;      //!< colour the output's vertices by valence
+        bool colorIrregular = false;         //!< colour the output's vertices by valence
     };
     //! The typed body of "Remeshing: Field-Aligned CVT (FCVT)".
-    bool remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params, const RemeshInputs& inputs,
-                    vcg::CallBackPos* cb);
+    bool remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params, const RemeshInputs& inputs, vcg::CallBackPos* cb);
     //! The typed body of "Remeshing Quality Report (FCVT)" (`reference` null: no distances).
     bool qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular, vcg::CallBackPos* cb);
     //! The typed body of "Compute 6-RoSy Field" (at most `maxCrosses` crosses drawn).
-    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, int maxCrosses,
-                          vcg::CallBackPos* cb);
+    bool computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, int maxCrosses, vcg::CallBackPos* cb);
     //! Takes back the GUI's "modified" mark on layer `layerId` after this filter (see the .cpp).
     static void keepUnmodified(MeshDocument& md, int layerId);
     //! The field source (0..sources-1: a script may carry any integer as an enum value) and the
@@ -337,8 +308,7 @@ private:
     {
         if (fieldSource < 0 || fieldSource >= sources)
             fail(QString("FCVT: %1 must be 0..%2 (got %3)").arg(parameterName(kFieldSource)).arg(sources - 1).arg(fieldSource));
-        if (seed < 0)
-            fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kSeed)).arg(seed));
+        if (seed < 0) fail(QString("FCVT: %1 must be 0 or more (got %2)").arg(parameterName(kSeed)).arg(seed));
     }
     //! Fails the filter: throws FilterFailure(message), which the glue reports.
     [[noreturn]] bool fail(const QString& message) { throw FilterFailure(message); }
@@ -366,10 +336,7 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
 
 }  // namespace
 
-QString pluginName()
-{
-    return "FilterFCVT";
-}
+QString pluginName() { return "FilterFCVT"; }
 
 QString filterName(FilterId filter)
 {
@@ -377,12 +344,9 @@ QString filterName(FilterId filter)
     case kRemesh:
         // Frozen: the key of .mlx scripts.
         return "Remeshing: Field-Aligned CVT (FCVT)";
-    case kField:
-        return "Compute 6-RoSy Field";
-    case kQuality:
-        return "Remeshing Quality Report (FCVT)";
-    default:
-        return QString();
+    case kField: return "Compute 6-RoSy Field";
+    case kQuality: return "Remeshing Quality Report (FCVT)";
+    default: return QString();
     }
 }
 
@@ -420,28 +384,21 @@ QString filterInfo(FilterId filter)
                "&gt; 6 pink, 6 white; vertices on an open boundary are judged against valence 4 "
                "(the target of the valence optimisation): &lt; 4 blue, &gt; 4 pink, 4 white. "
                "The geometry is unchanged.";
-    default:
-        return QString();
+    default: return QString();
     }
 }
 
 FilterKind filterKind(FilterId filter)
 {
     switch (filter) {
-    case kRemesh:
-        return FilterKind::Remeshing;
-    case kField:
-        return FilterKind::Normal;
+    case kRemesh: return FilterKind::Remeshing;
+    case kField: return FilterKind::Normal;
     case kQuality:
-    default:
-        return FilterKind::MeasureAndVertexColouring;
+    default: return FilterKind::MeasureAndVertexColouring;
     }
 }
 
-int preConditions(FilterId)
-{
-    return MeshModel::MM_FACENUMBER;
-}
+int preConditions(FilterId) { return MeshModel::MM_FACENUMBER; }
 
 int postCondition(FilterId filter)
 {
@@ -458,22 +415,14 @@ std::vector<ParamDef> parameters(FilterId filter, const MeshModel* current)
     return par.defs;
 }
 
-void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log,
-                 Callback* cb)
+void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb)
 {
     FilterRun run(log);
     switch (filter) {
-    case kRemesh:
-        run.applyRemesh(md, par, cb);
-        break;
-    case kField:
-        run.applyField(md, par, cb);
-        break;
-    case kQuality:
-        run.applyQuality(md, par, cb);
-        break;
-    default:
-        throw FilterFailure("FCVT: unknown filter");
+    case kRemesh: run.applyRemesh(md, par, cb); break;
+    case kField: run.applyField(md, par, cb); break;
+    case kQuality: run.applyQuality(md, par, cb); break;
+    default: throw FilterFailure("FCVT: unknown filter");
     }
 }
 
@@ -505,8 +454,7 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                               "How the output size is given: by the number of vertices (Target "
                               "vertices) or by the edge length (Target edge length), converted to "
                               "a vertex count through the surface area."));
-        par.addParam(RichAbsPerc(kTargetLength, 0.01f * diagonal, 0.0f, diagonal,
-                                 parameterLabel(kTargetLength),
+        par.addParam(RichAbsPerc(kTargetLength, 0.01f * diagonal, 0.0f, diagonal, parameterLabel(kTargetLength),
                                  "Wanted edge length in world units (used when Size by is 'target "
                                  "edge length'); the vertex count is about 2 * area / (sqrt(3) * "
                                  "length^2). Default: 1% of the bounding-box diagonal."));
@@ -516,42 +464,40 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                               "where the input's per-vertex quality is higher (every value must be "
                               "finite and above 0)."));
         par.addParam(advanced(RichFloat(kGradation, float(defaults.gradation), parameterLabel(kGradation),
-                               "With Vertex density 'curvature': how strongly curvature raises the "
-                               "density (0 or more; 0 = uniform, 1 = edges up to about 3 times "
-                               "shorter where the surface bends most).")));
-        par.addParam(RichFloat(kFeatureAngle, float(defaults.featureAngleDegrees),
-                               parameterLabel(kFeatureAngle),
+                                        "With Vertex density 'curvature': how strongly curvature raises the "
+                                        "density (0 or more; 0 = uniform, 1 = edges up to about 3 times "
+                                        "shorter where the surface bends most).")));
+        par.addParam(RichFloat(kFeatureAngle, float(defaults.featureAngleDegrees), parameterLabel(kFeatureAngle),
                                "Input edges whose faces meet at a dihedral angle of at least this "
                                "many degrees are sharp features that the output follows; 0 = no "
                                "sharp features (0..180)."));
-        par.addParam(RichBool(kValenceOptimization, defaults.valenceOptimization,
-                              parameterLabel(kValenceOptimization),
+        par.addParam(RichBool(kValenceOptimization, defaults.valenceOptimization, parameterLabel(kValenceOptimization),
                               "After the extraction, edge flips, collapses and splits that bring "
                               "vertices to valence 6 (4 on boundaries), then a relaxation that "
                               "realigns the edges (paper section 4.4)."));
         par.addParam(advanced(RichBool(kColorIrregular, false, parameterLabel(kColorIrregular),
-                              "Colour the output's vertices by valence: blue below 6 (4 on a "
-                              "boundary), pink above, white at it. Replaces the colour carried "
-                              "over from the input.")));
+                                       "Colour the output's vertices by valence: blue below 6 (4 on a "
+                                       "boundary), pink above, white at it. Replaces the colour carried "
+                                       "over from the input.")));
         par.addParam(advanced(RichFloat(kLambda, float(defaults.lambda), parameterLabel(kLambda),
-                               "Weight of the field-alignment energy; 0 gives a pure isotropic "
-                               "CVT.")));
-        par.addParam(advanced(RichEnum(kFieldSource, fieldSourceIndex(defaults.fieldSource),
-                              fieldSourceLabels(kAllFieldSources), parameterLabel(kFieldSource),
-                              "The 6-RoSy field the edges are aligned to: the extrinsically smooth "
-                              "field, the max or min principal-curvature direction, or the "
-                              "per-vertex Point3 attribute 'rosy' of the input layer.")));
+                                        "Weight of the field-alignment energy; 0 gives a pure isotropic "
+                                        "CVT.")));
+        par.addParam(advanced(RichEnum(kFieldSource, fieldSourceIndex(defaults.fieldSource), fieldSourceLabels(kAllFieldSources),
+                                       parameterLabel(kFieldSource),
+                                       "The 6-RoSy field the edges are aligned to: the extrinsically smooth "
+                                       "field, the max or min principal-curvature direction, or the "
+                                       "per-vertex Point3 attribute 'rosy' of the input layer.")));
         par.addParam(advanced(RichInt(kSeed, int(defaults.seed), parameterLabel(kSeed),
-                             "Seed of the initial sampling (0 or more); the same seed gives the same "
-                             "output.")));
+                                      "Seed of the initial sampling (0 or more); the same seed gives the same "
+                                      "output.")));
         par.addParam(advanced(RichInt(kCvtIterations, defaults.cvtIterations, parameterLabel(kCvtIterations),
-                             "L-BFGS iterations on the CVT energy (the paper uses 130).")));
+                                      "L-BFGS iterations on the CVT energy (the paper uses 130).")));
         par.addParam(advanced(RichInt(kFcvtIterations, defaults.fcvtIterations, parameterLabel(kFcvtIterations),
-                             "L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
-                             "iterations.")));
+                                      "L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
+                                      "iterations.")));
         par.addParam(advanced(RichBool(kFeatureSelection, false, parameterLabel(kFeatureSelection),
-                              "Also treat the border of the input's face selection (edges between a "
-                              "selected and an unselected face) as feature lines.")));
+                                       "Also treat the border of the input's face selection (edges between a "
+                                       "selected and an unselected face) as feature lines.")));
         // Added after issue 15's reordering (issue 17): at the end, like every new parameter.
         par.addParam(RichBool(kRepair, defaults.repair, parameterLabel(kRepair),
                               "Before remeshing, weld coincident and nearly coincident border "
@@ -564,8 +510,8 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
     }
     case kField: {
         const fieldcvt::FieldParams defaults;
-        par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.source),
-                              fieldSourceLabels(kComputedFieldSources), parameterLabel(kFieldSource),
+        par.addParam(RichEnum(kFieldSource, fieldSourceIndex(defaults.source), fieldSourceLabels(kComputedFieldSources),
+                              parameterLabel(kFieldSource),
                               "The extrinsically smooth 6-RoSy field (aligned to boundaries and "
                               "sharp edges), or the max or min principal-curvature direction."));
         par.addParam(RichInt(kSeed, int(defaults.seed), parameterLabel(kSeed),
@@ -580,25 +526,23 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
     case kQuality: {
         // The default reference is the measured layer itself, which means "no distances".
         const QString description = parameterLabel(kReferenceLayer);
-        const char* tooltip = "The layer d_RMS and d_H are measured against (e.g. the input of the "
-                              "remeshing). The current layer itself: no distances.";
+        const char* tooltip =
+            "The layer d_RMS and d_H are measured against (e.g. the input of the "
+            "remeshing). The current layer itself: no distances.";
         if (md != nullptr && m != nullptr)
             par.addParam(RichMesh(kReferenceLayer, m, md, description, tooltip));
         else  // no document: a parameter without a mesh (only for completeness of the overload)
-            par.addParam(RichMesh(kReferenceLayer, static_cast<MeshModel*>(nullptr), nullptr,
-                                  description, tooltip));
+            par.addParam(RichMesh(kReferenceLayer, static_cast<MeshModel*>(nullptr), nullptr, description, tooltip));
         par.addParam(RichBool(kColorIrregular, true, parameterLabel(kColorIrregular),
                               "Colour the vertices by valence: blue below 6 (4 on a boundary), "
                               "pink above, white at it."));
         break;
     }
-    default:
-        break;
+    default: break;
     }
 }
 
-bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
-                                   vcg::CallBackPos* cb)
+bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb)
 {
     int vertexCount = par.getInt(kVertexCount);
     const double lambda = par.getFloat(kLambda);
@@ -614,8 +558,7 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
                         .arg(sizeMode));
     if (sizeMode == kSizeByTargetLength) {
         MeshModel* input = currentTriangleLayer(md);
-        if (input == nullptr)
-            return false;
+        if (input == nullptr) return false;
         // In double and scale-robust (a float cross product overflows from coordinates ~1e10).
         const double area = fieldcvt::surfaceArea(fcvt_plugin::toTriMesh(input->cm));
         fieldcvt::VertexCountFromLength size;
@@ -626,9 +569,9 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
         }
         if (!size.warning.empty()) logWarning(QString("FCVT warning: %1").arg(QString::fromStdString(size.warning)));
         logInfo(QString("FCVT size: target edge length %1 on area %2 gives %3 vertices")
-                .arg(targetLength)
-                .arg(area)
-                .arg(size.vertexCount));
+                    .arg(targetLength)
+                    .arg(area)
+                    .arg(size.vertexCount));
         vertexCount = size.vertexCount;
     }
     // A script may carry any integer as the enum value: MeshLab does not check the range.
@@ -676,18 +619,15 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par,
     return remeshFcvt(md, params, inputs, cb);
 }
 
-bool FilterRun::applyQuality(MeshDocument& md, const ParamValues& par,
-                                    vcg::CallBackPos* cb)
+bool FilterRun::applyQuality(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb)
 {
     MeshModel* mesh = currentTriangleLayer(md);
-    if (mesh == nullptr)
-        return false;
+    if (mesh == nullptr) return false;
     MeshModel* reference = par.getMesh(kReferenceLayer);
     return qualityReport(*mesh, reference == mesh ? nullptr : reference, par.getBool(kColorIrregular), cb);
 }
 
-bool FilterRun::applyField(MeshDocument& md, const ParamValues& par,
-                                  vcg::CallBackPos* cb)
+bool FilterRun::applyField(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb)
 {
     const int fieldSource = par.getEnum(kFieldSource);
     const int seed = par.getInt(kSeed);
@@ -750,12 +690,11 @@ fieldcvt::TriMesh FilterRun::surfaceOf(const MeshModel& layer, bool keepFaces)
     return mesh;
 }
 
-bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params,
-                                  const RemeshInputs& inputs, vcg::CallBackPos* cb)
+bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params, const RemeshInputs& inputs,
+                           vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
-    if (input == nullptr)
-        return false;
+    if (input == nullptr) return false;
 
     fieldcvt::TriMesh in = surfaceOf(*input, inputs.featuresFromSelection);
     fieldcvt::RemeshParams run = params;
@@ -763,8 +702,7 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     if (run.fieldSource == fieldcvt::FieldSource::User) {
         // One vector per live vertex, in the order of toTriMesh.
         // Not const: vcg's handle has no const operator[].
-        auto rosy =
-            vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<Point3m>(input->cm, kRosyAttribute);
+        auto rosy = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<Point3m>(input->cm, kRosyAttribute);
         if (!vcg::tri::Allocator<CMeshO>::IsValidHandle<Point3m>(input->cm, rosy))
             return fail(QString("FCVT: %1 'per-vertex attribute rosy' needs the per-vertex "
                                 "Point3 attribute '%2' on layer '%3', which has none (run 'Compute "
@@ -775,8 +713,7 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
         run.userDirections.clear();
         run.userDirections.reserve(in.vertices.size());
         for (auto vi = input->cm.vert.begin(); vi != input->cm.vert.end(); ++vi)
-            if (!vi->IsD())
-                run.userDirections.push_back(toVec3(rosy[vi]));
+            if (!vi->IsD()) run.userDirections.push_back(toVec3(rosy[vi]));
     }
     if (inputs.densityFromQuality) {
         if (!input->hasDataMask(MeshModel::MM_VERTQUALITY))
@@ -791,12 +728,10 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
         int bad = 0;
         double firstBad = 0;
         for (const CVertexO& v : input->cm.vert) {
-            if (v.IsD())
-                continue;
+            if (v.IsD()) continue;
             const double q = double(v.cQ());
             if (!(q > 0) || !std::isfinite(q)) {
-                if (bad++ == 0)
-                    firstBad = q;
+                if (bad++ == 0) firstBad = q;
             }
             run.vertexDensity.push_back(q);
         }
@@ -823,25 +758,23 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
         run.featureEdges = selectionBorder(in, selected);
         if (run.featureEdges.empty())
             logWarning(QString("FCVT: %1 is on but the selection of '%2' (%3 of %4 faces) has "
-                        "no border inside the mesh: no feature edges from it")
-                    .arg(parameterName(kFeatureSelection))
-                    .arg(input->label())
-                    .arg(selectedCount)
-                    .arg(selected.size()));
+                               "no border inside the mesh: no feature edges from it")
+                           .arg(parameterName(kFeatureSelection))
+                           .arg(input->label())
+                           .arg(selectedCount)
+                           .arg(selected.size()));
         else
             logInfo(QString("FCVT features: %1 edges on the border of the %2 selected faces")
-                    .arg(run.featureEdges.size())
-                    .arg(selectedCount));
+                        .arg(run.featureEdges.size())
+                        .arg(selectedCount));
     }
 
     // MeshLab's callback takes an int percent; the 2020.09 callbacks never ask to stop, so the
     // core is never cancelled from here. Calls are throttled to changes of percent or stage.
     int lastPercent = -1;
     std::string lastStage;
-    fieldcvt::Progress progress = [cb, &lastPercent, &lastStage](const std::string& stage,
-                                                            double percent) {
-        if (cb == nullptr)
-            return true;
+    fieldcvt::Progress progress = [cb, &lastPercent, &lastStage](const std::string& stage, double percent) {
+        if (cb == nullptr) return true;
         const int p = std::isfinite(percent) ? static_cast<int>(std::clamp(percent, 0.0, 100.0)) : 0;
         if (p != lastPercent || stage != lastStage) {
             lastPercent = p;
@@ -864,13 +797,10 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
         fcvt_plugin::fromTriMesh(result.mesh, output->cm);
         if (!result.outputDirections.empty()) {
             if (result.outputDirections.size() != size_t(output->cm.vn))
-                throw fieldcvt::Error("the output field has " +
-                                      std::to_string(result.outputDirections.size()) +
-                                      " directions for " + std::to_string(output->cm.vn) +
-                                      " vertices");
+                throw fieldcvt::Error("the output field has " + std::to_string(result.outputDirections.size()) +
+                                      " directions for " + std::to_string(output->cm.vn) + " vertices");
             auto rosy = pointAttribute(output->cm, kRosyAttribute);
-            for (size_t i = 0; i < result.outputDirections.size(); ++i)
-                rosy[i] = toPoint3m(result.outputDirections[i]);
+            for (size_t i = 0; i < result.outputDirections.size(); ++i) rosy[i] = toPoint3m(result.outputDirections[i]);
         }
         output->cm.Tr = input->cm.Tr;
         updateBoxAndNormals(*output);
@@ -879,54 +809,45 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
         keep.quality = input->hasDataMask(MeshModel::MM_VERTQUALITY);
         keep.normals = input->hasDataMask(MeshModel::MM_VERTNORMAL);
         int mask = 0;
-        if (keep.colour)
-            mask |= MeshModel::MM_VERTCOLOR;
-        if (keep.quality)
-            mask |= MeshModel::MM_VERTQUALITY;
-        if (mask != 0)
-            output->updateDataMask(mask);
+        if (keep.colour) mask |= MeshModel::MM_VERTCOLOR;
+        if (keep.quality) mask |= MeshModel::MM_VERTQUALITY;
+        if (mask != 0) output->updateDataMask(mask);
         // Vertex i of `in` is the i-th live vertex of the input layer (toTriMesh's order).
         std::vector<const CVertexO*> inVerts;
         inVerts.reserve(in.vertices.size());
         for (const CVertexO& v : input->cm.vert)
-            if (!v.IsD())
-                inVerts.push_back(&v);
-        if (inVerts.size() != in.vertices.size())
-            throw fieldcvt::Error("input vertex count changed during the filter");
+            if (!v.IsD()) inVerts.push_back(&v);
+        if (inVerts.size() != in.vertices.size()) throw fieldcvt::Error("input vertex count changed during the filter");
         transferVertexData(in, inVerts, keep, output->cm);
         if (keep.colour || keep.quality)
             outputLines.push_back(QString("FCVT: per-vertex %1 of '%2' transferred to the output by closest point")
                                       .arg(keep.colour && keep.quality ? "colour and quality"
-                                                                       : keep.colour ? "colour" : "quality")
+                                           : keep.colour               ? "colour"
+                                                                       : "quality")
                                       .arg(input->label()));
         if (inputs.colorIrregular)
-            outputLines.push_back("FCVT valence colours on '" + output->label() + "': " +
-                                  applyValenceColours(result.mesh, *output));
+            outputLines.push_back("FCVT valence colours on '" + output->label() +
+                                  "': " + applyValenceColours(result.mesh, *output));
     } catch (...) {
         removeLayer(md, output);
         md.setCurrentMesh(input->id());
         throw;
     }
-    if (cb != nullptr)
-        cb(100, "FCVT done");
+    if (cb != nullptr) cb(100, "FCVT done");
     logReport(result, run, output->label(), input->label());
     for (const QString& line : outputLines) logInfo(line);
     return true;
 }
 
-bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params,
-                                        int maxCrosses, vcg::CallBackPos* cb)
+bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, int maxCrosses, vcg::CallBackPos* cb)
 {
     MeshModel* input = currentTriangleLayer(md);
-    if (input == nullptr)
-        return false;
+    if (input == nullptr) return false;
     const bool inputWasModified = input->meshModified();
 
-    if (cb != nullptr)
-        cb(0, "checking the input");
+    if (cb != nullptr) cb(0, "checking the input");
     const fieldcvt::TriMesh in = surfaceOf(*input);
-    if (cb != nullptr)
-        cb(10, "computing the 6-RoSy field");
+    if (cb != nullptr) cb(10, "computing the 6-RoSy field");
     // As `fcvt field` and the remeshing do: on the surface centred and scaled to unit cells.
     const fieldcvt::InputField computed = fieldcvt::fieldOfInput(in, params);
     const fieldcvt::InputReport& report = computed.report;
@@ -936,8 +857,7 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
 
     // Everything is computed: now change the document. The drawing layer is removed again if
     // filling it fails; the attribute is written last.
-    if (cb != nullptr)
-        cb(90, "drawing the field");
+    if (cb != nullptr) cb(90, "drawing the field");
     MeshModel* drawing = md.addNewMesh("", kFieldLayerLabel, false);
     fcvt_plugin::FieldDrawingStats stats;
     try {
@@ -954,22 +874,19 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
     auto rosy = pointAttribute(input->cm, kRosyAttribute);
     size_t live = 0;
     for (auto vi = input->cm.vert.begin(); vi != input->cm.vert.end(); ++vi) {
-        if (vi->IsD())
-            continue;
+        if (vi->IsD()) continue;
         const int c = report.cleanIndex[live++];
         rosy[vi] = c >= 0 ? toPoint3m(field.directions[size_t(c)]) : Point3m(0, 0, 0);
     }
-    if (cb != nullptr)
-        cb(100, "6-RoSy field done");
-    if (!inputWasModified)
-        keepUnmodified(md, input->id());
+    if (cb != nullptr) cb(100, "6-RoSy field done");
+    if (!inputWasModified) keepUnmodified(md, input->id());
 
     // What the input check would repair is not an error here: the layer is not changed, the
     // field just leaves those elements out (information, not a warning).
     const QStringList ignored = fcvt_plugin::fieldIgnoredText(report);
     if (!ignored.isEmpty())
-        logInfo(QString("FCVT field: the layer '%1' is unchanged; the field leaves out %2")
-                    .arg(input->label(), ignored.join("; ")));
+        logInfo(
+            QString("FCVT field: the layer '%1' is unchanged; the field leaves out %2").arg(input->label(), ignored.join("; ")));
     logInfo(QString("FCVT field: %1 (seed %2) on layer '%3': %4; stored as the per-vertex attribute "
                     "'%5'")
                 .arg(kFieldSources[fieldSourceIndex(params.source)].label)
@@ -984,8 +901,7 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
                 .arg(stats.drawnVertices)
                 .arg(clean.vertexCount())
                 .arg(maxCrosses)
-                .arg(stats.spacing > 0 ? QString(", one per grid cell of %1").arg(num(stats.spacing))
-                                       : QString(", every vertex"))
+                .arg(stats.spacing > 0 ? QString(", one per grid cell of %1").arg(num(stats.spacing)) : QString(", every vertex"))
                 .arg(num(stats.meanSegmentLength))
                 .arg(num(stats.meanEdgeLength))
                 .arg(fcvt_plugin::kLift));
@@ -1001,74 +917,56 @@ void FilterRun::keepUnmodified(MeshDocument& md, int layerId)
     // event loop (meshlabserver) this never runs, and nothing needs it.
     QPointer<MeshDocument> document(&md);
     QTimer::singleShot(0, qApp, [document, layerId]() {
-        if (document.isNull())
-            return;
-        if (MeshModel* m = document->getMesh(layerId))
-            m->setMeshModified(false);
+        if (document.isNull()) return;
+        if (MeshModel* m = document->getMesh(layerId)) m->setMeshModified(false);
         for (QWidget* w : QApplication::topLevelWidgets())
-            if (w->inherits("MainWindow"))
-                QMetaObject::invokeMethod(w, "updateLayerDialog", Qt::QueuedConnection);
+            if (w->inherits("MainWindow")) QMetaObject::invokeMethod(w, "updateLayerDialog", Qt::QueuedConnection);
     });
 }
 
-bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular,
-                                     vcg::CallBackPos* cb)
+bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular, vcg::CallBackPos* cb)
 {
     if (reference != nullptr && reference->cm.fn == 0)
         return fail(QString("FCVT: the reference layer '%1' has no faces; choose a triangle mesh, or "
                             "the measured layer itself for no distances")
                         .arg(reference->label()));
-    if (cb != nullptr)
-        cb(0, "FCVT: measuring quality");
+    if (cb != nullptr) cb(0, "FCVT: measuring quality");
     const fieldcvt::TriMesh measured = fcvt_plugin::toTriMesh(mesh.cm);
     const fieldcvt::QualityMetrics quality = fieldcvt::computeQuality(measured);
     const fieldcvt::TopologySummary topology = fieldcvt::computeTopology(measured);
     fieldcvt::DistanceMetrics distance;
     if (reference != nullptr) {
-        if (cb != nullptr)
-            cb(20, "FCVT: measuring distances");
+        if (cb != nullptr) cb(20, "FCVT: measuring distances");
         const fieldcvt::TriMesh ref = fcvt_plugin::toTriMesh(reference->cm);
         distance = fieldcvt::computeDistance(measured, ref, distanceSamples(measured, ref));
     }
     // Measured before anything changes: a failure above leaves the layer as it was.
     QString colours;
-    if (colorIrregular)
-        colours = applyValenceColours(measured, mesh);
-    if (cb != nullptr)
-        cb(100, "FCVT: quality report done");
+    if (colorIrregular) colours = applyValenceColours(measured, mesh);
+    if (cb != nullptr) cb(100, "FCVT: quality report done");
 
-    logInfo(QString("FCVT quality of '%1': %2 vertices, %3 faces")
-            .arg(mesh.label())
-            .arg(quality.vertices)
-            .arg(quality.faces));
+    logInfo(QString("FCVT quality of '%1': %2 vertices, %3 faces").arg(mesh.label()).arg(quality.vertices).arg(quality.faces));
     logInfo("FCVT quality: " + qualityText(quality));
     if (reference != nullptr) {
         logInfo(QString("FCVT quality: d_RMS %1, d_H %2 (fractions of the bounding-box diagonal of '%3')")
-                .arg(num(distance.rms))
-                .arg(num(distance.hausdorff))
-                .arg(reference->label()));
+                    .arg(num(distance.rms))
+                    .arg(num(distance.hausdorff))
+                    .arg(reference->label()));
         if (mesh.cm.Tr != reference->cm.Tr)
             logWarning(QString("FCVT quality: '%1' and '%2' have different transformation matrices; the "
-                        "distances are between the stored coordinates")
-                    .arg(mesh.label(), reference->label()));
+                               "distances are between the stored coordinates")
+                           .arg(mesh.label(), reference->label()));
     } else {
         logInfo("FCVT quality: d_RMS and d_H not measured (the reference layer is the measured layer)");
     }
     logInfo("FCVT quality topology: " + topologyText(topology));
-    if (colorIrregular)
-        logInfo("FCVT valence colours: " + colours);
+    if (colorIrregular) logInfo("FCVT valence colours: " + colours);
     return true;
 }
 
-void FilterRun::logInfo(const QString& line)
-{
-    log_.info(plainLogText(line));
-}
+void FilterRun::logInfo(const QString& line) { log_.info(plainLogText(line)); }
 
-void FilterRun::logWarning(const QString& line)
-{
-    log_.warning(plainLogText(line));
-}
+void FilterRun::logWarning(const QString& line) { log_.warning(plainLogText(line)); }
 
 void FilterRun::logReport(const fieldcvt::RemeshResult& r, const fieldcvt::RemeshParams& run, const QString& layerName,
                           const QString& inputName)
@@ -1077,7 +975,8 @@ void FilterRun::logReport(const fieldcvt::RemeshResult& r, const fieldcvt::Remes
     for (const std::string& n : r.notes) logInfo(QString::fromStdString("FCVT note: " + n));
     for (int i = 0; i < r.inputWarnings && i < static_cast<int>(r.warnings.size()); ++i)
         logWarning(QString::fromStdString("FCVT warning: " + r.warnings[size_t(i)]));
-    logInfo(run.repair ? QString("FCVT repair: %1").arg(r.repair.notes.empty() && r.repair.information.empty() ? "nothing to repair" : "done")
+    logInfo(run.repair ? QString("FCVT repair: %1")
+                             .arg(r.repair.notes.empty() && r.repair.information.empty() ? "nothing to repair" : "done")
                        : QString("FCVT repair: off (strict input check)"));
     if (r.outputDirections.empty())
         logInfo("FCVT field: none (lambda = 0 or no FCVT iterations)");
@@ -1095,16 +994,14 @@ void FilterRun::logReport(const fieldcvt::RemeshResult& r, const fieldcvt::Remes
     QString energies;
     for (size_t i = 0; i < r.energyHistory.size(); ++i) {
         const fieldcvt::EnergyRecord& e = r.energyHistory[i];
-        if (i + 1 < r.energyHistory.size() && r.energyHistory[i + 1].phase == e.phase)
-            continue;
+        if (i + 1 < r.energyHistory.size() && r.energyHistory[i + 1].phase == e.phase) continue;
         energies += QString("%1%2 E_CVT %3, E_field %4")
                         .arg(energies.isEmpty() ? "" : "; ")
                         .arg(QString::fromStdString(e.phase))
                         .arg(num(e.cvt, 6))
                         .arg(num(e.field, 6));
     }
-    if (!energies.isEmpty())
-        logInfo("FCVT energy at the end of each phase: " + energies);
+    if (!energies.isEmpty()) logInfo("FCVT energy at the end of each phase: " + energies);
     if (run.valenceOptimization) {
         const fieldcvt::ValenceStats& v = r.valence;
         logInfo(QString("FCVT valence optimisation: V6% %1 before, %2 after; %3 flips, %4 collapses, %5 splits in %6 rounds")
@@ -1126,12 +1023,11 @@ void FilterRun::logReport(const fieldcvt::RemeshResult& r, const fieldcvt::Remes
                 .arg(r.mesh.faceCount())
                 .arg(r.evaluations));
     // The boundary figures only where there is a boundary (a closed output has none to measure).
-    const QString boundary =
-        r.outputTopology.boundaryLoops > 0 || r.inputTopology.boundaryLoops > 0
-            ? QString(", d_boundary %1 (of the input diagonal), boundary vertices of valence 4: %2%")
-                  .arg(num(m.dBoundary))
-                  .arg(num(m.boundaryV4Pct))
-            : QString();
+    const QString boundary = r.outputTopology.boundaryLoops > 0 || r.inputTopology.boundaryLoops > 0
+                                 ? QString(", d_boundary %1 (of the input diagonal), boundary vertices of valence 4: %2%")
+                                       .arg(num(m.dBoundary))
+                                       .arg(num(m.boundaryV4Pct))
+                                 : QString();
     // The distances' sampling is said: the quality report filter samples more densely.
     const QString samples = run.distanceSamples > 0 ? QString("%1 random points per mesh").arg(run.distanceSamples)
                                                     : QString("20 random points per face");

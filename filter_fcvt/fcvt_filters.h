@@ -26,8 +26,8 @@ QString pluginName();
 QString filterName(FilterId filter);  //!< frozen: the key of .mlx scripts
 QString filterInfo(FilterId filter);
 FilterKind filterKind(FilterId filter);
-int preConditions(FilterId filter);   //!< MeshModel::MM_* mask
-int postCondition(FilterId filter);   //!< MeshModel::MM_* mask
+int preConditions(FilterId filter);  //!< MeshModel::MM_* mask
+int postCondition(FilterId filter);  //!< MeshModel::MM_* mask
 
 // The parameter names are frozen API: they are the keys of .mlx scripts.
 constexpr const char* kVertexCount = "vertexCount";
@@ -63,8 +63,8 @@ constexpr const char* kFieldLayerLabel = "6-RoSy field";
 struct ParamDef {
     enum Type { Int, Float, Bool, Enum, AbsPerc, Mesh };
     Type type = Int;
-    const char* name = "";  //!< frozen: the key in .mlx scripts
-    double value = 0;       //!< default: the int, float, bool (0/1), enum index or absolute length
+    const char* name = "";    //!< frozen: the key in .mlx scripts
+    double value = 0;         //!< default: the int, float, bool (0/1), enum index or absolute length
     double min = 0, max = 0;  //!< AbsPerc: the range of the absolute value
     QStringList enumLabels;   //!< Enum: the labels (index = the value in .mlx scripts)
     QString label, tooltip;
@@ -116,8 +116,7 @@ using Callback = bool(const int pos, const char* str);
 
 //! Runs `filter` on the document. Throws FilterFailure (bad parameters or input) or any other
 //! exception (a failure in the core); in both cases the document is as it was before.
-void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log,
-                 Callback* cb);
+void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb);
 
 //! The message for an unexpected exception (anything but FilterFailure).
 QString unexpectedFailure(const std::exception* e);

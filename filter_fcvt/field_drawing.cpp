@@ -17,10 +17,7 @@ namespace fcvt_plugin {
 
 namespace {
 
-Point3m toPoint(const fieldcvt::Vec3& v)
-{
-    return Point3m(Scalarm(v.x()), Scalarm(v.y()), Scalarm(v.z()));
-}
+Point3m toPoint(const fieldcvt::Vec3& v) { return Point3m(Scalarm(v.x()), Scalarm(v.y()), Scalarm(v.z())); }
 
 // Per vertex the mean length of its face edges (each edge seen once per face), 0 on no face.
 std::vector<double> localEdgeLengths(const fieldcvt::TriMesh& mesh, double& meanEdge)
@@ -41,8 +38,7 @@ std::vector<double> localEdgeLengths(const fieldcvt::TriMesh& mesh, double& mean
             ++edges;
         }
     meanEdge = edges > 0 ? total / double(edges) : 0.0;
-    for (size_t v = 0; v < sum.size(); ++v)
-        sum[v] = count[v] > 0 ? sum[v] / count[v] : meanEdge;
+    for (size_t v = 0; v < sum.size(); ++v) sum[v] = count[v] > 0 ? sum[v] / count[v] : meanEdge;
     return sum;
 }
 
@@ -61,49 +57,42 @@ std::vector<size_t> oneVertexPerCell(const fieldcvt::TriMesh& mesh, const fieldc
         const fieldcvt::Vec3 q = (mesh.vertices[v] - origin) / cell;
         const std::array<long long, 3> key = {(long long)std::floor(q.x()), (long long)std::floor(q.y()),
                                               (long long)std::floor(q.z())};
-        if (taken.insert(key).second)
-            chosen.push_back(v);
+        if (taken.insert(key).second) chosen.push_back(v);
     }
     return chosen;
 }
 
 }  // namespace
 
-FieldDrawingStats drawField(const fieldcvt::TriMesh& mesh, const fieldcvt::DirectionField& field, CMeshO& out,
-                            int maxCrosses)
+FieldDrawingStats drawField(const fieldcvt::TriMesh& mesh, const fieldcvt::DirectionField& field, CMeshO& out, int maxCrosses)
 {
     const size_t n = mesh.vertices.size();
     if (field.normals.size() != n || field.directions.size() != n)
-        throw fieldcvt::Error("field drawing: the field has " + std::to_string(field.directions.size()) +
-                              " directions for " + std::to_string(n) + " vertices");
+        throw fieldcvt::Error("field drawing: the field has " + std::to_string(field.directions.size()) + " directions for " +
+                              std::to_string(n) + " vertices");
     FieldDrawingStats stats;
     const std::vector<double> local = localEdgeLengths(mesh, stats.meanEdgeLength);
     out.Clear();
-    if (n == 0)
-        return stats;
+    if (n == 0) return stats;
 
     maxCrosses = std::max(1, maxCrosses);
     std::vector<size_t> drawn;
     if (n <= size_t(maxCrosses)) {
         drawn.resize(n);
-        for (size_t v = 0; v < n; ++v)
-            drawn[v] = v;
+        for (size_t v = 0; v < n; ++v) drawn[v] = v;
     } else {
         fieldcvt::Vec3 lo = mesh.vertices[0];
-        for (const fieldcvt::Vec3& p : mesh.vertices)
-            lo = lo.cwiseMin(p);
+        for (const fieldcvt::Vec3& p : mesh.vertices) lo = lo.cwiseMin(p);
         double area = 0;
         for (const fieldcvt::Face& f : mesh.faces)
             area += 0.5 * (mesh.vertices[size_t(f[1])] - mesh.vertices[size_t(f[0])])
                               .cross(mesh.vertices[size_t(f[2])] - mesh.vertices[size_t(f[0])])
                               .norm();
         double cell = std::sqrt(std::max(area, 1e-300) / double(maxCrosses));
-        if (!(cell > 0) || !std::isfinite(cell))
-            cell = 1;
+        if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
         for (int step = 0; step < 200; ++step, cell *= 1.1) {
             drawn = oneVertexPerCell(mesh, lo, cell);
-            if (drawn.size() <= size_t(maxCrosses))
-                break;
+            if (drawn.size() <= size_t(maxCrosses)) break;
         }
         stats.spacing = cell;
     }

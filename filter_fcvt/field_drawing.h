@@ -19,17 +19,17 @@ namespace fcvt_plugin {
 inline const vcg::Color4b kFieldColour(255, 170, 0, 255);
 
 struct FieldDrawingStats {
-    int drawnVertices = 0;       //!< vertices of `mesh` that got a cross
-    double spacing = 0;          //!< grid cell of the subset (0: every vertex drawn)
-    double meanSegmentLength = 0; //!< mean over the crosses of a segment's length (mesh units)
-    double meanEdgeLength = 0;   //!< of `mesh`, over its face edges
+    int drawnVertices = 0;         //!< vertices of `mesh` that got a cross
+    double spacing = 0;            //!< grid cell of the subset (0: every vertex drawn)
+    double meanSegmentLength = 0;  //!< mean over the crosses of a segment's length (mesh units)
+    double meanEdgeLength = 0;     //!< of `mesh`, over its face edges
 };
 
 //! Strip geometry relative to a cross's segment length L (see drawField).
-constexpr double kSegmentPerEdge = 0.6;   //!< L = 0.6 x the local edge length ...
-constexpr double kSegmentPerCell = 0.6;   //!< ... or 0.6 x the subset's grid cell, the larger
-constexpr double kStripWidth = 0.12;      //!< width of a strip, x L
-constexpr double kLift = 0.15;            //!< height of the cross above the vertex along n, x L
+constexpr double kSegmentPerEdge = 0.6;  //!< L = 0.6 x the local edge length ...
+constexpr double kSegmentPerCell = 0.6;  //!< ... or 0.6 x the subset's grid cell, the larger
+constexpr double kStripWidth = 0.12;     //!< width of a strip, x L
+constexpr double kLift = 0.15;           //!< height of the cross above the vertex along n, x L
 
 //! Replaces the content of `out` with the drawing of `field` on `mesh`. At most `maxCrosses`
 //! crosses: every vertex when the mesh has no more, otherwise one vertex per cell of a uniform
@@ -41,7 +41,6 @@ constexpr double kLift = 0.15;            //!< height of the cross above the ver
 //! vertex's edges, kSegmentPerCell x the grid cell). Strip s of cross i: vertices 12i + 4s ..
 //! 12i + 4s + 3 (end -d: -w, end +d: -w, end +d: +w, end -d: +w, with w = n x d), faces 6i + 2s
 //! and 6i + 2s + 1, facing n. Vertex normals = n, vertex colours kFieldColour.
-FieldDrawingStats drawField(const fieldcvt::TriMesh& mesh, const fieldcvt::DirectionField& field, CMeshO& out,
-                            int maxCrosses);
+FieldDrawingStats drawField(const fieldcvt::TriMesh& mesh, const fieldcvt::DirectionField& field, CMeshO& out, int maxCrosses);
 
 }  // namespace fcvt_plugin

@@ -15,10 +15,7 @@ QString plainLogText(const QString& text)
     return out;
 }
 
-QString num(double v, int precision)
-{
-    return std::isfinite(v) ? QString::number(v, 'g', precision) : QString("n/a");
-}
+QString num(double v, int precision) { return std::isfinite(v) ? QString::number(v, 'g', precision) : QString("n/a"); }
 
 namespace {
 
@@ -53,22 +50,16 @@ constexpr ParameterLabel kParameterLabels[] = {
 QString parameterLabel(const char* key)
 {
     for (const ParameterLabel& p : kParameterLabels)
-        if (std::strcmp(p.key, key) == 0)
-            return p.label;
+        if (std::strcmp(p.key, key) == 0) return p.label;
     return key;
 }
 
-QString parameterName(const char* key)
-{
-    return QString("'%1' (%2)").arg(parameterLabel(key), key);
-}
+QString parameterName(const char* key) { return QString("'%1' (%2)").arg(parameterLabel(key), key); }
 
-QString singularitySummary(const std::vector<fieldcvt::Singularity>& singularities,
-                           const fieldcvt::TopologySummary& topology)
+QString singularitySummary(const std::vector<fieldcvt::Singularity>& singularities, const fieldcvt::TopologySummary& topology)
 {
     long long sum = 0;
-    for (const fieldcvt::Singularity& s : singularities)
-        sum += s.index;
+    for (const fieldcvt::Singularity& s : singularities) sum += s.index;
     const long long chi = static_cast<long long>(topology.vertices) - topology.edges + topology.faces;
     const QString why =
         topology.boundaryLoops == 0
@@ -108,8 +99,9 @@ QString stageLabel(const std::string& stage)
 
 QString qualityText(const fieldcvt::QualityMetrics& m)
 {
-    return QString("Q_min %1, Q_avg %2, theta_min %3 deg, mean theta_min %4 deg, theta_max %5 deg, "
-                   "triangles with an angle under 30 deg %6%, over 90 deg %7%, V6% %8")
+    return QString(
+               "Q_min %1, Q_avg %2, theta_min %3 deg, mean theta_min %4 deg, theta_max %5 deg, "
+               "triangles with an angle under 30 deg %6%, over 90 deg %7%, V6% %8")
         .arg(num(m.qMin))
         .arg(num(m.qAvg))
         .arg(num(m.thetaMin))
@@ -134,17 +126,17 @@ QStringList fieldIgnoredText(const fieldcvt::InputReport& r)
     QStringList parts;
     if (r.removedUnreferencedVertices > 0)
         parts << QString("%1 vertices on no face (their rosy is (0,0,0))").arg(r.removedUnreferencedVertices);
-    if (r.removedDegenerateFaces > 0)
-        parts << QString("%1 degenerate (zero-area) faces").arg(r.removedDegenerateFaces);
-    if (r.removedDuplicateFaces > 0)
-        parts << QString("%1 duplicate faces").arg(r.removedDuplicateFaces);
+    if (r.removedDegenerateFaces > 0) parts << QString("%1 degenerate (zero-area) faces").arg(r.removedDegenerateFaces);
+    if (r.removedDuplicateFaces > 0) parts << QString("%1 duplicate faces").arg(r.removedDuplicateFaces);
     if (r.mergedDuplicateVertices > 0)
-        parts << QString("%1 duplicate vertices (same coordinates) taken as one with the vertex they "
-                         "repeat")
+        parts << QString(
+                     "%1 duplicate vertices (same coordinates) taken as one with the vertex they "
+                     "repeat")
                      .arg(r.mergedDuplicateVertices);
     if (r.flippedFaces > 0)
-        parts << QString("the orientation of %1 faces, read reversed to orient each component "
-                         "consistently")
+        parts << QString(
+                     "the orientation of %1 faces, read reversed to orient each component "
+                     "consistently")
                      .arg(r.flippedFaces);
     if (r.splitNonManifoldVertices > 0)
         parts << QString("the connectivity at %1 non-manifold vertices, read as one vertex per fan of faces")
@@ -154,9 +146,10 @@ QStringList fieldIgnoredText(const fieldcvt::InputReport& r)
 
 QString valenceColourText(const ValenceColouring& c)
 {
-    return QString("interior vertices: %1 of valence under 6 (blue), %2 of valence 6 (white), %3 over 6 "
-                   "(pink); boundary vertices (target 4): %4 under 4 (blue), %5 at 4 (white), %6 over 4 "
-                   "(pink)%7")
+    return QString(
+               "interior vertices: %1 of valence under 6 (blue), %2 of valence 6 (white), %3 over 6 "
+               "(pink); boundary vertices (target 4): %4 under 4 (blue), %5 at 4 (white), %6 over 4 "
+               "(pink)%7")
         .arg(c.interiorLow)
         .arg(c.interiorRegular)
         .arg(c.interiorHigh)

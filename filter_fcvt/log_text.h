@@ -37,8 +37,7 @@ QString parameterName(const char* key);
 //! "12 singularities, index sum 12 (in sixths of a turn: ...)". `topology` is the surface the
 //! field lives on: a closed one's sum is 6 x its Euler characteristic (Poincare-Hopf); with
 //! boundary loops the log says that the sum need not be.
-QString singularitySummary(const std::vector<fieldcvt::Singularity>& singularities,
-                           const fieldcvt::TopologySummary& topology);
+QString singularitySummary(const std::vector<fieldcvt::Singularity>& singularities, const fieldcvt::TopologySummary& topology);
 
 //! The core's stage names as the status bar shows them ("cvt 12/65" -> "FCVT: CVT iterations 12/65").
 QString stageLabel(const std::string& stage);

@@ -22,22 +22,19 @@ fieldcvt::TriMesh toTriMesh(const CMeshO& in)
     std::vector<int> remap(in.vert.size(), -1);
     for (size_t i = 0; i < in.vert.size(); ++i) {
         const CVertexO& v = in.vert[i];
-        if (v.IsD())
-            continue;
+        if (v.IsD()) continue;
         remap[i] = out.vertexCount();
         const Point3m& p = v.cP();
         out.vertices.emplace_back(double(p[0]), double(p[1]), double(p[2]));
     }
     for (size_t f = 0; f < in.face.size(); ++f) {
         const CFaceO& face = in.face[f];
-        if (face.IsD())
-            continue;
+        if (face.IsD()) continue;
         fieldcvt::Face tri;
         for (int k = 0; k < 3; ++k) {
             const size_t vi = size_t(vcg::tri::Index(in, face.cV(k)));
             if (vi >= remap.size() || remap[vi] < 0)
-                throw fieldcvt::InvalidInputError("face " + std::to_string(f) +
-                                              " references a deleted or invalid vertex");
+                throw fieldcvt::InvalidInputError("face " + std::to_string(f) + " references a deleted or invalid vertex");
             tri[k] = remap[vi];
         }
         out.faces.push_back(tri);
@@ -81,8 +78,7 @@ FilePrecision fullPrecisionCoordinates(const std::string& path, fieldcvt::TriMes
 void fromTriMesh(const fieldcvt::TriMesh& mesh, CMeshO& out)
 {
     out.Clear();
-    if (mesh.vertices.empty())
-        return;
+    if (mesh.vertices.empty()) return;
     auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(out, mesh.vertices.size());
     for (const fieldcvt::Vec3& p : mesh.vertices) {
         vi->P() = Point3m(Scalarm(p.x()), Scalarm(p.y()), Scalarm(p.z()));
@@ -92,8 +88,7 @@ void fromTriMesh(const fieldcvt::TriMesh& mesh, CMeshO& out)
     for (const fieldcvt::Face& f : mesh.faces) {
         for (int k = 0; k < 3; ++k) {
             if (f[k] < 0 || f[k] >= mesh.vertexCount())
-                throw fieldcvt::Error("output face references vertex " + std::to_string(f[k]) +
-                                  " out of range");
+                throw fieldcvt::Error("output face references vertex " + std::to_string(f[k]) + " out of range");
             fi->V(k) = &out.vert[size_t(f[k])];
         }
         ++fi;

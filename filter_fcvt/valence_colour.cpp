@@ -12,8 +12,7 @@ ValenceColouring colourByValence(const fieldcvt::TriMesh& mesh)
     std::vector<std::pair<int, int>> halfEdges;
     halfEdges.reserve(mesh.faces.size() * 3);
     for (const fieldcvt::Face& f : mesh.faces)
-        for (int k = 0; k < 3; ++k)
-            halfEdges.emplace_back(std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]));
+        for (int k = 0; k < 3; ++k) halfEdges.emplace_back(std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]));
     std::sort(halfEdges.begin(), halfEdges.end());
 
     const size_t n = mesh.vertices.size();
@@ -21,14 +20,12 @@ ValenceColouring colourByValence(const fieldcvt::TriMesh& mesh)
     std::vector<char> onBoundary(n, 0);
     for (size_t i = 0; i < halfEdges.size();) {
         size_t j = i;
-        while (j < halfEdges.size() && halfEdges[j] == halfEdges[i])
-            ++j;
+        while (j < halfEdges.size() && halfEdges[j] == halfEdges[i]) ++j;
         const auto [a, b] = halfEdges[i];
         if (a != b && a >= 0 && b >= 0 && size_t(a) < n && size_t(b) < n) {
             ++valence[size_t(a)];
             ++valence[size_t(b)];
-            if (j - i == 1)
-                onBoundary[size_t(a)] = onBoundary[size_t(b)] = 1;
+            if (j - i == 1) onBoundary[size_t(a)] = onBoundary[size_t(b)] = 1;
         }
         i = j;
     }

@@ -17,7 +17,7 @@ inline const vcg::Color4b kValenceRegular(255, 255, 255, 255);
 inline const vcg::Color4b kValenceUnused(160, 160, 160, 255);
 
 struct ValenceColouring {
-    std::vector<vcg::Color4b> colours;  //!< one per vertex of the mesh
+    std::vector<vcg::Color4b> colours;                           //!< one per vertex of the mesh
     int interiorLow = 0, interiorRegular = 0, interiorHigh = 0;  //!< valence < 6, = 6, > 6
     int boundaryLow = 0, boundaryRegular = 0, boundaryHigh = 0;  //!< valence < 4, = 4, > 4
     int unused = 0;                                              //!< vertices on no face

@@ -30,12 +30,12 @@ double coordinate(Bytes& in, double scale, double offset)
 {
     const std::int16_t raw = in.next16();
     switch (raw) {
-        case std::numeric_limits<std::int16_t>::min(): return std::numeric_limits<double>::quiet_NaN();
-        case std::numeric_limits<std::int16_t>::max(): return std::numeric_limits<double>::infinity();
-        case std::numeric_limits<std::int16_t>::min() + 1: return -std::numeric_limits<double>::infinity();
-        case std::numeric_limits<std::int16_t>::max() - 1: return 1e300;
-        case std::numeric_limits<std::int16_t>::max() - 2: return 1e-300;
-        default: return raw / 4096.0 * scale + offset;
+    case std::numeric_limits<std::int16_t>::min(): return std::numeric_limits<double>::quiet_NaN();
+    case std::numeric_limits<std::int16_t>::max(): return std::numeric_limits<double>::infinity();
+    case std::numeric_limits<std::int16_t>::min() + 1: return -std::numeric_limits<double>::infinity();
+    case std::numeric_limits<std::int16_t>::max() - 1: return 1e300;
+    case std::numeric_limits<std::int16_t>::max() - 2: return 1e-300;
+    default: return raw / 4096.0 * scale + offset;
     }
 }
 

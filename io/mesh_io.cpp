@@ -102,7 +102,8 @@ void checkReadable(const std::string& path)
     if (fs::is_directory(status)) io_detail::fail(path, "is a directory, not a mesh file");
     // Opening a FIFO blocks until something writes to it, and a device or socket never ends:
     // only a regular file (also through links) is a mesh file.
-    if (!fs::is_regular_file(status)) io_detail::fail(path, "is " + describeFileType(status.type()) + ", not a regular mesh file");
+    if (!fs::is_regular_file(status))
+        io_detail::fail(path, "is " + describeFileType(status.type()) + ", not a regular mesh file");
     if (!std::ifstream(path, std::ios::binary)) io_detail::fail(path, std::string("cannot open: ") + std::strerror(errno));
     if (fs::file_size(path, ec) == 0) io_detail::fail(path, "file is empty");
 }
@@ -114,7 +115,8 @@ void checkResult(const std::string& path, const TriMesh& mesh)
         io_detail::fail(path, "no faces (" + std::to_string(mesh.vertexCount()) + " vertices): not a surface mesh");
     for (const Face& f : mesh.faces)
         for (int v : f)
-            if (v < 0 || v >= mesh.vertexCount()) io_detail::fail(path, "face vertex index " + std::to_string(v) + " out of range");
+            if (v < 0 || v >= mesh.vertexCount())
+                io_detail::fail(path, "face vertex index " + std::to_string(v) + " out of range");
 }
 
 }  // namespace
@@ -146,8 +148,9 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* 
     if (out.polygonsTriangulated > 0)
         out.notes.push_back("triangulated " + std::to_string(out.polygonsTriangulated) + " polygons");
     if (out.polygonsNotSimple > 0)
-        out.warnings.push_back(std::to_string(out.polygonsNotSimple) + " polygons are not simple (their edges cross or touch, " +
-                               "or their corners are on one line): triangulated as well as possible, their triangles may overlap");
+        out.warnings.push_back(
+            std::to_string(out.polygonsNotSimple) + " polygons are not simple (their edges cross or touch, " +
+            "or their corners are on one line): triangulated as well as possible, their triangles may overlap");
     return mesh;
 }
 

@@ -10,8 +10,8 @@ namespace fieldcvt {
 
 //! What the reader noticed and did (reported by the CLI, never silent).
 struct MeshReadInfo {
-    int polygonsTriangulated = 0;  //!< faces with more than 3 corners split into triangles
-    int polygonsNotSimple = 0;     //!< of the faces, those whose edges cross or touch (triangulate.h)
+    int polygonsTriangulated = 0;       //!< faces with more than 3 corners split into triangles
+    int polygonsNotSimple = 0;          //!< of the faces, those whose edges cross or touch (triangulate.h)
     std::vector<std::string> notes;     //!< information: the mesh is what the file says
     std::vector<std::string> warnings;  //!< the mesh read differs from what the file says
 };

@@ -34,8 +34,7 @@ TriMesh readObj(const std::string& path, const std::string& text, MeshReadInfo& 
         if (t[0] == "v") {
             if (t.size() < 4) scan.fail("vertex with fewer than 3 coordinates");
             mesh.vertices.emplace_back(scan.number(t[1]), scan.number(t[2]), scan.number(t[3]));
-            if (mesh.vertices.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-                scan.fail("too many vertices");
+            if (mesh.vertices.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) scan.fail("too many vertices");
         } else if (t[0] == "f") {
             if (t.size() < 4) scan.fail("face with fewer than 3 corners");
             polygon.clear();

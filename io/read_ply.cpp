@@ -23,8 +23,7 @@ namespace {
 //! long holds (converting a larger or fractional value would be undefined or misleading).
 std::string indexText(double v)
 {
-    if (std::isfinite(v) && std::fabs(v) < 9.0e18 && v == std::floor(v))
-        return std::to_string(static_cast<long long>(v));
+    if (std::isfinite(v) && std::fabs(v) < 9.0e18 && v == std::floor(v)) return std::to_string(static_cast<long long>(v));
     std::ostringstream s;
     s << v;
     return s.str();
@@ -34,10 +33,10 @@ enum class Encoding { Ascii, LittleEndian, BigEndian };
 
 struct Property {
     std::string name;
-    int size = 0;            //!< bytes of the value (of each item, for a list)
+    int size = 0;  //!< bytes of the value (of each item, for a list)
     bool isFloat = false;
     bool isSigned = false;
-    int countSize = 0;       //!< > 0: a list, with a count of this many bytes
+    int countSize = 0;  //!< > 0: a list, with a count of this many bytes
     bool countSigned = false;
 };
 
@@ -51,11 +50,11 @@ struct Element {
 Property scalarType(const std::string& type)
 {
     static const std::map<std::string, Property> types = {
-        {"char", {"", 1, false, true}},   {"int8", {"", 1, false, true}},    {"uchar", {"", 1, false, false}},
-        {"uint8", {"", 1, false, false}}, {"short", {"", 2, false, true}},   {"int16", {"", 2, false, true}},
+        {"char", {"", 1, false, true}},    {"int8", {"", 1, false, true}},    {"uchar", {"", 1, false, false}},
+        {"uint8", {"", 1, false, false}},  {"short", {"", 2, false, true}},   {"int16", {"", 2, false, true}},
         {"ushort", {"", 2, false, false}}, {"uint16", {"", 2, false, false}}, {"int", {"", 4, false, true}},
-        {"int32", {"", 4, false, true}},  {"uint", {"", 4, false, false}},   {"uint32", {"", 4, false, false}},
-        {"float", {"", 4, true, true}},   {"float32", {"", 4, true, true}},  {"double", {"", 8, true, true}},
+        {"int32", {"", 4, false, true}},   {"uint", {"", 4, false, false}},   {"uint32", {"", 4, false, false}},
+        {"float", {"", 4, true, true}},    {"float32", {"", 4, true, true}},  {"double", {"", 8, true, true}},
         {"float64", {"", 8, true, true}}};
     const auto it = types.find(type);
     return it == types.end() ? Property{} : it->second;
@@ -65,7 +64,9 @@ Property scalarType(const std::string& type)
 class BodyReader {
 public:
     BodyReader(const std::string& path, const std::string& bytes, std::size_t start, Encoding encoding)
-        : path_(path), bytes_(bytes), pos_(start), encoding_(encoding) {}
+        : path_(path), bytes_(bytes), pos_(start), encoding_(encoding)
+    {
+    }
 
     double value(int size, bool isFloat, bool isSigned)
     {
@@ -88,20 +89,22 @@ public:
             std::memcpy(&d, &u, 8);
             return d;
         }
-        if (isSigned && size < 8 && (u >> (8 * size - 1)) & 1) return static_cast<double>(static_cast<std::int64_t>(u - (std::uint64_t{1} << (8 * size))));
+        if (isSigned && size < 8 && (u >> (8 * size - 1)) & 1)
+            return static_cast<double>(static_cast<std::int64_t>(u - (std::uint64_t{1} << (8 * size))));
         return static_cast<double>(u);
     }
 
     //! What is left after the last value read: non-blank lines (ASCII) or bytes (binary).
     std::string leftover() const
     {
-        if (encoding_ != Encoding::Ascii)
-            return pos_ < bytes_.size() ? std::to_string(bytes_.size() - pos_) + " bytes" : "";
+        if (encoding_ != Encoding::Ascii) return pos_ < bytes_.size() ? std::to_string(bytes_.size() - pos_) + " bytes" : "";
         int lines = 0;
         bool blank = true;
         for (std::size_t i = pos_; i < bytes_.size(); ++i) {
-            if (bytes_[i] == '\n') lines += !blank, blank = true;
-            else if (!std::isspace(static_cast<unsigned char>(bytes_[i]))) blank = false;
+            if (bytes_[i] == '\n')
+                lines += !blank, blank = true;
+            else if (!std::isspace(static_cast<unsigned char>(bytes_[i])))
+                blank = false;
         }
         lines += !blank;
         return lines > 0 ? std::to_string(lines) + " lines" : "";
@@ -116,7 +119,9 @@ private:
         if (start == pos_) fail(path_, "truncated PLY file (unexpected end of data)");
         const std::string_view token(bytes_.data() + start, pos_ - start);
         double value = 0;
-        if (!parseNumber(token, value)) fail(path_, (isOutOfRange(token) ? "number out of range (not a finite double) " : "malformed number ") + quoteInput(token) + " in the PLY data");
+        if (!parseNumber(token, value))
+            fail(path_, (isOutOfRange(token) ? "number out of range (not a finite double) " : "malformed number ") +
+                            quoteInput(token) + " in the PLY data");
         return value;
     }
 
@@ -146,14 +151,21 @@ std::size_t parseHeader(const std::string& path, const std::string& bytes, Encod
             ended = true;
             continue;
         }
-        auto bad = [&] { fail(path, "malformed PLY header line " + quoteInput(std::string_view(line).substr(0, line.find_last_not_of("\r") + 1))); };
+        auto bad = [&] {
+            fail(path,
+                 "malformed PLY header line " + quoteInput(std::string_view(line).substr(0, line.find_last_not_of("\r") + 1)));
+        };
         if (keyword == "format") {
             std::string format;
             words >> format;
-            if (format == "ascii") encoding = Encoding::Ascii;
-            else if (format == "binary_little_endian") encoding = Encoding::LittleEndian;
-            else if (format == "binary_big_endian") encoding = Encoding::BigEndian;
-            else bad();
+            if (format == "ascii")
+                encoding = Encoding::Ascii;
+            else if (format == "binary_little_endian")
+                encoding = Encoding::LittleEndian;
+            else if (format == "binary_big_endian")
+                encoding = Encoding::BigEndian;
+            else
+                bad();
             formatSeen = true;
         } else if (keyword == "element") {
             Element e;
@@ -207,7 +219,8 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
             const Property& p = e.properties[i];
             for (int k = 0; k < 3; ++k)
                 if (isVertex && p.countSize == 0 && p.name == std::string(1, "xyz"[k])) coordinate[k] = static_cast<int>(i);
-            if (isFace && p.countSize > 0 && !p.isFloat && (p.name == "vertex_indices" || p.name == "vertex_index")) indexList = static_cast<int>(i);
+            if (isFace && p.countSize > 0 && !p.isFloat && (p.name == "vertex_indices" || p.name == "vertex_index"))
+                indexList = static_cast<int>(i);
         }
         if (isVertex && std::count(coordinate, coordinate + 3, -1) > 0) fail(path, "PLY vertices lack an x, y or z property");
         // Optional per-vertex groups: used when all three are scalar properties, noted otherwise.
@@ -225,8 +238,10 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
             for (std::size_t i = 0; i < e.properties.size(); ++i)
                 for (int k = 0; k < 3; ++k)
                     if (e.properties[i].name == g.names[k]) {
-                        if (e.properties[i].countSize > 0) ++lists;
-                        else if (g.property[k] < 0) g.property[k] = static_cast<int>(i), ++found;
+                        if (e.properties[i].countSize > 0)
+                            ++lists;
+                        else if (g.property[k] < 0)
+                            g.property[k] = static_cast<int>(i), ++found;
                     }
             g.use = found == 3 && lists == 0;
             if (!g.use && (found > 0 || lists > 0))
@@ -264,7 +279,8 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                     polygon.push_back(static_cast<int>(v));
                 }
                 if (static_cast<int>(i) != indexList) continue;
-                if (polygon.size() < 3) fail(path, "face " + std::to_string(n) + " has " + std::to_string(polygon.size()) + " corners");
+                if (polygon.size() < 3)
+                    fail(path, "face " + std::to_string(n) + " has " + std::to_string(polygon.size()) + " corners");
                 addPolygon(mesh, polygon, info);
             }
             if (isVertex) {
@@ -278,7 +294,8 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
     if (const std::string rest = in.leftover(); !rest.empty()) {
         std::string declared;
         for (const Element& e : elements) declared += (declared.empty() ? "" : ", ") + std::to_string(e.count) + " " + e.name;
-        info.warnings.push_back("PLY data goes on after the elements its header declares (" + declared + "): " + rest + " ignored");
+        info.warnings.push_back("PLY data goes on after the elements its header declares (" + declared + "): " + rest +
+                                " ignored");
     }
     return mesh;
 }

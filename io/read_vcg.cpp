@@ -35,7 +35,8 @@ std::vector<int> weldVertices(const VcgMesh& m, TriMesh& mesh)
     for (std::size_t i = 0; i < m.vert.size(); ++i) {
         if (m.vert[i].IsD()) continue;
         const auto& p = m.vert[i].cP();
-        const auto [it, inserted] = seen.emplace(std::array<std::uint64_t, 3>{bits(p[0]), bits(p[1]), bits(p[2])}, mesh.vertexCount());
+        const auto [it, inserted] =
+            seen.emplace(std::array<std::uint64_t, 3>{bits(p[0]), bits(p[1]), bits(p[2])}, mesh.vertexCount());
         index[i] = it->second;
         if (inserted) mesh.vertices.emplace_back(p[0], p[1], p[2]);
     }
@@ -49,7 +50,8 @@ TriMesh toTriMesh(const VcgMesh& m, MeshReadInfo& info)
     const std::vector<int> index = weldVertices(m, mesh);
     for (const VcgFace& f : m.face)
         if (!f.IsD())
-            mesh.faces.push_back({index[vcg::tri::Index(m, f.cV(0))], index[vcg::tri::Index(m, f.cV(1))], index[vcg::tri::Index(m, f.cV(2))]});
+            mesh.faces.push_back(
+                {index[vcg::tri::Index(m, f.cV(0))], index[vcg::tri::Index(m, f.cV(1))], index[vcg::tri::Index(m, f.cV(2))]});
     const std::size_t merged = m.vert.size() - mesh.vertices.size();
     if (merged > 0) info.notes.push_back("merged " + std::to_string(merged) + " duplicate STL vertices");
     return mesh;
@@ -84,8 +86,9 @@ void readAsciiStl(const std::string& path, const std::string& text, VcgMesh& m, 
     bool inSolid = false;
     auto token = [&](const char* expected) -> std::string_view {
         if (next == scan.tokens().size()) {
-            if (!scan.nextLine()) fail(path, std::string("unexpected end of file: expected '") + expected + "' in facet " +
-                                                 std::to_string(m.face.size() + 1));
+            if (!scan.nextLine())
+                fail(path, std::string("unexpected end of file: expected '") + expected + "' in facet " +
+                               std::to_string(m.face.size() + 1));
             next = 0;
         }
         return scan.tokens()[next++];
@@ -127,7 +130,7 @@ void readAsciiStl(const std::string& path, const std::string& text, VcgMesh& m, 
     }
     if (inSolid)
         info.warnings.push_back("ASCII STL ends without 'endsolid' (truncated?); its " + std::to_string(m.face.size()) +
-                             " complete facets were read");
+                                " complete facets were read");
 }
 
 }  // namespace
@@ -152,8 +155,10 @@ TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo&
         if (bytes.compare(start, 5, "solid") != 0) fail(path, "not an STL file (ASCII STL starts with 'solid')");
     }
     VcgMesh m;
-    if (binary) readBinaryStl(bytes, m);
-    else readAsciiStl(path, bytes, m, info);
+    if (binary)
+        readBinaryStl(bytes, m);
+    else
+        readAsciiStl(path, bytes, m, info);
     return toTriMesh(m, info);
 }
 

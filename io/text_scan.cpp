@@ -16,10 +16,7 @@ namespace {
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 //! from_chars rejects a leading '+', which some exporters write.
-std::string_view dropPlus(std::string_view token)
-{
-    return token.size() > 1 && token[0] == '+' ? token.substr(1) : token;
-}
+std::string_view dropPlus(std::string_view token) { return token.size() > 1 && token[0] == '+' ? token.substr(1) : token; }
 
 }  // namespace
 
@@ -89,14 +86,10 @@ long long TextScanner::integer(std::string_view token) const
     const std::string_view t = dropPlus(token);
     long long value = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-    if (ec != std::errc() || end != t.data() + t.size())
-        fail("malformed integer " + quoteInput(token));
+    if (ec != std::errc() || end != t.data() + t.size()) fail("malformed integer " + quoteInput(token));
     return value;
 }
 
-void TextScanner::fail(const std::string& what) const
-{
-    io_detail::fail(path_, "line " + std::to_string(line_) + ": " + what);
-}
+void TextScanner::fail(const std::string& what) const { io_detail::fail(path_, "line " + std::to_string(line_) + ": " + what); }
 
 }  // namespace fieldcvt::io_detail

@@ -23,7 +23,9 @@ public:
     //! A leading byte order mark is skipped. With `continuation` (OBJ), a line ending in a
     //! backslash goes on on the next line.
     TextScanner(const std::string& path, std::string_view text, bool continuation = false)
-        : path_(path), text_(text), pos_(byteOrderMarkLength(text)), continuation_(continuation) {}
+        : path_(path), text_(text), pos_(byteOrderMarkLength(text)), continuation_(continuation)
+    {
+    }
 
     //! Moves to the next line that has at least one token; false at the end of the text. The
     //! line number is that of the line's last part when it was continued.

@@ -12,5 +12,4 @@ class VcgVertex : public vcg::Vertex<VcgUsedTypes, vcg::vertex::Coord3d, vcg::ve
 class VcgFace : public vcg::Face<VcgUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
 class VcgMesh : public vcg::tri::TriMesh<std::vector<VcgVertex>, std::vector<VcgFace>> {};
 
-
 }  // namespace fieldcvt::io_detail

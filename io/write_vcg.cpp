@@ -29,7 +29,8 @@ void writeOff(const std::string& path, const TriMesh& mesh)
     VcgMesh m;
     toVcgMesh(mesh, m);
     using Exporter = vcg::tri::io::ExporterOFF<VcgMesh>;
-    if (const int status = Exporter::Save(m, path.c_str(), 0)) fail(path, std::string("cannot write: ") + Exporter::ErrorMsg(status));
+    if (const int status = Exporter::Save(m, path.c_str(), 0))
+        fail(path, std::string("cannot write: ") + Exporter::ErrorMsg(status));
 }
 
 void writeStl(const std::string& path, const TriMesh& mesh)
@@ -37,7 +38,8 @@ void writeStl(const std::string& path, const TriMesh& mesh)
     VcgMesh m;
     toVcgMesh(mesh, m);
     using Exporter = vcg::tri::io::ExporterSTL<VcgMesh>;
-    if (const int status = Exporter::Save(m, path.c_str(), true)) fail(path, std::string("cannot write: ") + Exporter::ErrorMsg(status));
+    if (const int status = Exporter::Save(m, path.c_str(), true))
+        fail(path, std::string("cannot write: ") + Exporter::ErrorMsg(status));
 }
 
 }  // namespace fieldcvt::io_detail

@@ -14,7 +14,7 @@ packages=(
   meshlab xvfb xauth python3 debootstrap
   x11-apps x11-utils
   f3d optipng pngquant xdotool
-  clang libclang-rt-14-dev libomp-dev
+  clang libclang-rt-14-dev libomp-dev clang-format
 )
 
 missing=()

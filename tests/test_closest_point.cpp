@@ -128,15 +128,9 @@ TEST(ClosestPointTriangle, NeedleTriangleMatchesItsLongEdges)
     EXPECT_NEAR((qa - above).norm(), 1.0, 1e-12);
 }
 
-TEST(ClosestPointTree, MatchesBruteForceOnIcosphere)
-{
-    expectTreeMatchesBruteForce(icosphere(3), 3000, 1.6, 11);
-}
+TEST(ClosestPointTree, MatchesBruteForceOnIcosphere) { expectTreeMatchesBruteForce(icosphere(3), 3000, 1.6, 11); }
 
-TEST(ClosestPointTree, MatchesBruteForceOnTorus)
-{
-    expectTreeMatchesBruteForce(torus(40, 24), 3000, 1.6, 12);
-}
+TEST(ClosestPointTree, MatchesBruteForceOnTorus) { expectTreeMatchesBruteForce(torus(40, 24), 3000, 1.6, 12); }
 
 TEST(ClosestPointTree, PointsOnTheSurfaceHaveZeroDistance)
 {

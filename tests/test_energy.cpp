@@ -77,7 +77,7 @@ TEST(FieldFrames, HintsFromThePreviousEvaluationFollowTheSurface)
     std::uniform_real_distribution<double> step(-0.05, 0.05);
     for (Vec3& p : points) p += Vec3(step(rng), step(rng), step(rng));
     std::vector<int> hinted = faces;
-    hinted[0] = -1;  // no hint
+    hinted[0] = -1;                       // no hint
     hinted[1] = surface.faceCount() - 1;  // a far one: the walk does not get there
     const FieldFrames withHints = energy.framesAt(points, hinted);
     const FieldFrames without = energy.framesAt(points);

@@ -46,7 +46,7 @@ TEST(Features, UserEdgesMustBeMeshEdges)
     const FeatureLines lines = detectFeatures(m, 0, {{1, 0}, {0, 7}}, &ignored);
     ASSERT_EQ(lines.edges.size(), 1u);
     EXPECT_EQ(lines.edges[0], (std::array<int, 2>{0, 1}));
-    EXPECT_EQ(ignored, 1);  // 0-7 is a space diagonal, not an edge
+    EXPECT_EQ(ignored, 1);                               // 0-7 is a space diagonal, not an edge
     EXPECT_EQ(lines.corners, (std::vector<int>{0, 1}));  // a lone edge: both ends are line ends
 }
 
@@ -110,7 +110,7 @@ TEST(Features, DeviationMeasuresDistanceToOutputEdges)
     lines.edges = {{0, 1}};
     lines.segments = {{Vec3(0, 0, 0), Vec3(1, 0, 0)}};
     EXPECT_NEAR(featureDeviation(lines, m, 0, 0.01), 0.0, 1e-12);  // on a cube edge
-    lines.segments = {{Vec3(0.5, 0.5, 0), Vec3(0.5, 0.5, 0.0)}};  // a face centre: on a diagonal
+    lines.segments = {{Vec3(0.5, 0.5, 0), Vec3(0.5, 0.5, 0.0)}};   // a face centre: on a diagonal
     EXPECT_NEAR(featureDeviation(lines, m, 0, 0.01), 0.0, 1e-12);
     EXPECT_NEAR(featureDeviation(lines, m, 60, 0.01), 0.5, 1e-12);  // but 0.5 from a sharp edge
 }

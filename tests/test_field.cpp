@@ -206,13 +206,12 @@ TEST(Field, SharpEdgesConstrainTheField)
         verts.push_back(p);
         return static_cast<int>(verts.size()) - 1;
     };
-    const Eigen::Matrix3d rotations[6] = {
-        Eigen::Matrix3d::Identity(),
-        Eigen::AngleAxisd(kPi, Vec3::UnitX()).toRotationMatrix(),
-        Eigen::AngleAxisd(kPi / 2, Vec3::UnitX()).toRotationMatrix(),
-        Eigen::AngleAxisd(-kPi / 2, Vec3::UnitX()).toRotationMatrix(),
-        Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()).toRotationMatrix(),
-        Eigen::AngleAxisd(-kPi / 2, Vec3::UnitY()).toRotationMatrix()};
+    const Eigen::Matrix3d rotations[6] = {Eigen::Matrix3d::Identity(),
+                                          Eigen::AngleAxisd(kPi, Vec3::UnitX()).toRotationMatrix(),
+                                          Eigen::AngleAxisd(kPi / 2, Vec3::UnitX()).toRotationMatrix(),
+                                          Eigen::AngleAxisd(-kPi / 2, Vec3::UnitX()).toRotationMatrix(),
+                                          Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()).toRotationMatrix(),
+                                          Eigen::AngleAxisd(-kPi / 2, Vec3::UnitY()).toRotationMatrix()};
     for (const Eigen::Matrix3d& r : rotations)
         for (const Face& f : grid.faces) {
             Face g;
@@ -476,8 +475,7 @@ TEST(Field, FandiskFieldFollowsSharpEdges)
     const DirectionField f = computeField(m, FieldParams{});
     std::map<std::pair<int, int>, std::vector<int>> edgeFaces;
     for (int t = 0; t < m.faceCount(); ++t)
-        for (int k = 0; k < 3; ++k)
-            edgeFaces[std::minmax(m.faces[t][k], m.faces[t][(k + 1) % 3])].push_back(t);
+        for (int k = 0; k < 3; ++k) edgeFaces[std::minmax(m.faces[t][k], m.faces[t][(k + 1) % 3])].push_back(t);
     std::vector<std::vector<Vec3>> sharpTangents(m.vertexCount());
     for (const auto& [edge, faces] : edgeFaces) {
         if (faces.size() != 2) continue;

@@ -124,7 +124,8 @@ TEST(FieldEnergy, GradientMatchesCentralDifferencesWithFrozenFramesAndWeights)
             plus[i][k] += h;
             minus[i][k] -= h;
             const double numeric =
-                (fieldEnergy(plus, diagram.edges, frames, nullptr) - fieldEnergy(minus, diagram.edges, frames, nullptr)) / (2 * h);
+                (fieldEnergy(plus, diagram.edges, frames, nullptr) - fieldEnergy(minus, diagram.edges, frames, nullptr)) /
+                (2 * h);
             worst = std::max(worst, std::abs(numeric - gradient[3 * i + k]) / std::max(1e-3, std::abs(numeric)));
         }
     EXPECT_LT(worst, 1e-5);

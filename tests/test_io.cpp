@@ -253,10 +253,11 @@ TEST_F(IoTest, AsciiPlyRosyInAnyOrderAndIncompleteGroups)
     EXPECT_TRUE(read.normals.empty());
 
     // rosy_x and rosy_y without rosy_z: not used, and said so.
-    const std::string partial = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                                "property float z\nproperty float rosy_x\nproperty float rosy_y\nelement face 2\n"
-                                "property list uchar int vertex_indices\nend_header\n"
-                                "0 0 0 1 0\n1 0 0 1 0\n1 1 0 1 0\n0 1 0 1 0\n3 0 1 2\n3 0 2 3\n";
+    const std::string partial =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nproperty float rosy_x\nproperty float rosy_y\nelement face 2\n"
+        "property list uchar int vertex_indices\nend_header\n"
+        "0 0 0 1 0\n1 0 0 1 0\n1 1 0 1 0\n0 1 0 1 0\n3 0 1 2\n3 0 2 3\n";
     MeshReadInfo info;
     expectSquare(readMesh(write("p.ply", partial), &info, &read));
     EXPECT_TRUE(read.rosy.empty());
@@ -268,7 +269,8 @@ TEST_F(IoTest, WriteErrors)
 {
     const TriMesh grid = testmesh::planeGrid(1);
     EXPECT_THROW(writeMesh(path("x.xyz"), grid), IOError);
-    for (const std::string ext : {"ply", "obj", "off", "stl"}) EXPECT_THROW(writeMesh(path("missing/dir/x." + ext), grid), IOError);
+    for (const std::string ext : {"ply", "obj", "off", "stl"})
+        EXPECT_THROW(writeMesh(path("missing/dir/x." + ext), grid), IOError);
 }
 
 //! Each broken file must throw an IOError whose one-line message names the file.
@@ -309,7 +311,8 @@ TEST_F(IoTest, PlyDataAfterTheDeclaredFacesIsReported)
 {
     for (const bool binary : {false, true}) {
         SCOPED_TRACE(binary ? "binary" : "ascii");
-        std::string ply = binary ? binarySquarePly() : plyHeader("ascii", 4, 2) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+        std::string ply =
+            binary ? binarySquarePly() : plyHeader("ascii", 4, 2) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
         ply += binary ? std::string("\x03\0\0\0\0\x01\0\0\0\x02\0\0\0", 13) : "3 0 1 3\n\n3 1 2 3\n";
         MeshReadInfo info;
         expectSquare(readMesh(write("x.ply", ply), &info));
@@ -380,7 +383,10 @@ TEST_F(IoTest, PolygonsWithStraightCornersGetNoZeroAreaTriangles)
 
 TEST_F(IoTest, BrokenObj)
 {
-    expectIoError(write("g.obj", "\x7f" "ELF garbage \x01\x02\n"), "no faces");
+    expectIoError(write("g.obj",
+                        "\x7f"
+                        "ELF garbage \x01\x02\n"),
+                  "no faces");
     expectIoError(write("r.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n"), "line 4");
     expectIoError(write("z.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 0 1 2\n"), "does not exist");
     expectIoError(write("n.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0x\nf 1 2 3\n"), "malformed number");
@@ -440,9 +446,9 @@ struct BundledMesh {
 
 TEST_F(IoTest, BundledMeshes)
 {
-    for (const BundledMesh& b : {BundledMesh{"bunny.obj", 35947, 69451}, BundledMesh{"torus.obj", 3072, 6144},
-                                 BundledMesh{"fertility.off", 4494, 9000}, BundledMesh{"cylinder.off", 930, 1800},
-                                 BundledMesh{"fandisk.off", 7229, 14454}}) {
+    for (const BundledMesh& b :
+         {BundledMesh{"bunny.obj", 35947, 69451}, BundledMesh{"torus.obj", 3072, 6144}, BundledMesh{"fertility.off", 4494, 9000},
+          BundledMesh{"cylinder.off", 930, 1800}, BundledMesh{"fandisk.off", 7229, 14454}}) {
         SCOPED_TRACE(b.name);
         MeshReadInfo info;
         const TriMesh m = readMesh(testmesh::resource(b.name), &info);

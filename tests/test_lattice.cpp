@@ -228,11 +228,13 @@ TEST(Lattice, CylinderInteriorIsAllValenceSix)
         }
         int irregular = 0, top = 0, bottom = 0;
         for (int v = 0; v < r.mesh.vertexCount(); ++v) {
-            if (border.count(v)) (r.mesh.vertices[v].z() > 0 ? top : bottom)++;
-            else irregular += valence[v] != 6;
+            if (border.count(v))
+                (r.mesh.vertices[v].z() > 0 ? top : bottom)++;
+            else
+                irregular += valence[v] != 6;
         }
-        std::printf("cylinder 1000, %s start: %d vertices, %d irregular interior, rims %d / %d\n",
-                    lattice ? "lattice" : "random", r.mesh.vertexCount(), irregular, top, bottom);
+        std::printf("cylinder 1000, %s start: %d vertices, %d irregular interior, rims %d / %d\n", lattice ? "lattice" : "random",
+                    r.mesh.vertexCount(), irregular, top, bottom);
         if (lattice) {
             EXPECT_EQ(irregular, 0);
             EXPECT_EQ(top, bottom);

@@ -57,10 +57,10 @@ TEST(MeshCheck, RejectsNonManifoldEdgeWithCountAndLocation)
 TEST(MeshCheck, RemovesUnreferencedDegenerateAndDuplicateFaces)
 {
     TriMesh m = testmesh::planeGrid(2);
-    m.vertices.emplace_back(5, 5, 5);           // unreferenced
-    m.faces.push_back({0, 0, 1});               // repeated corner
-    m.faces.push_back({0, 1, 2});               // collinear: zero area
-    m.faces.push_back(m.faces[0]);              // duplicate
+    m.vertices.emplace_back(5, 5, 5);  // unreferenced
+    m.faces.push_back({0, 0, 1});      // repeated corner
+    m.faces.push_back({0, 1, 2});      // collinear: zero area
+    m.faces.push_back(m.faces[0]);     // duplicate
     InputReport report;
     const TriMesh clean = prepareInput(m, report);
     EXPECT_EQ(report.removedUnreferencedVertices, 1);
@@ -170,11 +170,11 @@ TEST(MeshCheck, MergesExactlyDuplicateVerticesFirst)
 
 TEST(MeshCheck, MergedVerticesCanMakeFacesDegenerateOrDuplicate)
 {
-    TriMesh m = testmesh::planeGrid(1);     // 0 (0,0)  1 (1,0)  2 (0,1)  3 (1,1)
-    m.vertices.emplace_back(1, 0, 0);       // 4: copy of 1
-    m.vertices.emplace_back(1, 1, 0);       // 5: copy of 3
-    m.faces.push_back({0, 4, 5});           // the first face again, through the copies
-    m.faces.push_back({1, 4, 3});           // repeated corner once merged
+    TriMesh m = testmesh::planeGrid(1);  // 0 (0,0)  1 (1,0)  2 (0,1)  3 (1,1)
+    m.vertices.emplace_back(1, 0, 0);    // 4: copy of 1
+    m.vertices.emplace_back(1, 1, 0);    // 5: copy of 3
+    m.faces.push_back({0, 4, 5});        // the first face again, through the copies
+    m.faces.push_back({1, 4, 3});        // repeated corner once merged
     InputReport report;
     const TriMesh clean = prepareInput(m, report);
     EXPECT_EQ(clean.faceCount(), 2);

@@ -386,10 +386,12 @@ TEST(MetricsTopology, TestDiskIsAManifoldDisk)
 // The valence stage's V6% before and after (v6Percent) is computeQuality's, without the angles.
 TEST(Metrics, V6PercentIsComputeQualitys)
 {
-    for (const fieldcvt::TriMesh& m : {fieldcvt::testmesh::torus(24, 12), fieldcvt::testmesh::disk(6), fieldcvt::testmesh::icosphere(2)}) {
+    for (const fieldcvt::TriMesh& m :
+         {fieldcvt::testmesh::torus(24, 12), fieldcvt::testmesh::disk(6), fieldcvt::testmesh::icosphere(2)}) {
         fieldcvt::TriMesh irregular = m;
         irregular.faces.pop_back();  // a hole: border vertices, and some irregular ones
-        for (const fieldcvt::TriMesh& mesh : {m, irregular}) EXPECT_EQ(fieldcvt::v6Percent(mesh), fieldcvt::computeQuality(mesh).v6Pct);
+        for (const fieldcvt::TriMesh& mesh : {m, irregular})
+            EXPECT_EQ(fieldcvt::v6Percent(mesh), fieldcvt::computeQuality(mesh).v6Pct);
     }
     EXPECT_EQ(fieldcvt::v6Percent(fieldcvt::TriMesh{}), 0.0);
 }

@@ -262,8 +262,7 @@ TEST(Repair, NothingLeftFailsWithTheVertexCountNeeded)
         repairMesh(m, params, report);
         FAIL() << "no error";
     } catch (const InvalidInputError& e) {
-        EXPECT_NE(std::string(e.what()).find("all 1000 connected components are too small for 300 vertices"),
-                  std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("all 1000 connected components are too small for 300 vertices"), std::string::npos)
             << e.what();
         EXPECT_NE(std::string(e.what()).find("use at least 8000 vertices"), std::string::npos) << e.what();
     }

@@ -99,7 +99,8 @@ TEST(Rvd, HexagonalLatticeGivesEquilateralDelaunayTriangles)
     const TriMesh surface = testmesh::planeGrid(9, 1.0);
     std::vector<Vec3> seeds;
     for (int j = 0; j * h * std::sqrt(3.0) / 2 <= 1.0; ++j)
-        for (int i = 0; (i + 0.5 * (j % 2)) * h <= 1.0; ++i) seeds.emplace_back((i + 0.5 * (j % 2)) * h, j * h * std::sqrt(3.0) / 2, 0.0);
+        for (int i = 0; (i + 0.5 * (j % 2)) * h <= 1.0; ++i)
+            seeds.emplace_back((i + 0.5 * (j % 2)) * h, j * h * std::sqrt(3.0) / 2, 0.0);
     RestrictedVoronoiDiagram rvd(surface);
     RvdResult result;
     RvdOptions options;
@@ -236,7 +237,7 @@ TEST(Rvd, NeighbourListsFromCandidatesGiveTheSameDiagram)
         for (size_t i = 0; i < current.size(); ++i)
             current[i] += 0.01 * Vec3(std::sin(1.0 * i + step), std::cos(3.0 * i - step), std::sin(7.0 * i * step));
         if (step == 5) current[17] = current[200] + Vec3(0.5, 0, 0);  // a far jump
-        if (step == 8) current[33] = current[34];                      // coincident seeds
+        if (step == 8) current[33] = current[34];                     // coincident seeds
         RvdResult a, b;
         warm.compute(current, options, a);
         RestrictedVoronoiDiagram fresh(surface);

@@ -16,17 +16,17 @@ TEST(ThreadBudget, OtherRunnableTasksFromLoadavg)
     EXPECT_EQ(otherRunnableTasks("2.00 1.21 1.16 3/79 13827"), 2);
     EXPECT_EQ(otherRunnableTasks(""), -1);
     EXPECT_EQ(otherRunnableTasks("0.10 0.20 0.30"), -1);
-    EXPECT_EQ(otherRunnableTasks("0.10 0.20 0.30 80 1"), -1);   // no slash
-    EXPECT_EQ(otherRunnableTasks("0.10 0.20 0.30 /80 1"), -1);  // no count
+    EXPECT_EQ(otherRunnableTasks("0.10 0.20 0.30 80 1"), -1);    // no slash
+    EXPECT_EQ(otherRunnableTasks("0.10 0.20 0.30 /80 1"), -1);   // no count
     EXPECT_EQ(otherRunnableTasks("0.10 0.20 0.30 0/80 1"), -1);  // the reader itself is missing
     EXPECT_EQ(otherRunnableTasks("a b c 1/2 3"), -1);
 }
 
 TEST(ThreadBudget, OneThreadPerFreeCoreUnlessAsked)
 {
-    EXPECT_EQ(threadsForLoad(0, 2, 0), 2);   // an idle machine: every core
-    EXPECT_EQ(threadsForLoad(0, 2, 1), 1);   // a busy process beside: the other core
-    EXPECT_EQ(threadsForLoad(0, 2, 5), 1);   // all taken: still one
+    EXPECT_EQ(threadsForLoad(0, 2, 0), 2);  // an idle machine: every core
+    EXPECT_EQ(threadsForLoad(0, 2, 1), 1);  // a busy process beside: the other core
+    EXPECT_EQ(threadsForLoad(0, 2, 5), 1);  // all taken: still one
     EXPECT_EQ(threadsForLoad(0, 8, 3), 5);
     EXPECT_EQ(threadsForLoad(0, 4, -1), 4);  // load unknown: every core
     EXPECT_EQ(threadsForLoad(3, 2, 1), 3);   // asked for: as asked (the output is the same)

@@ -67,7 +67,8 @@ TEST(Triangulate, StraightCornersMakeNoZeroAreaTriangle)
     // The same at 1e300 (no overflow in the plane's orientation tests).
     std::vector<Vec3> huge = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 2, 0}, {0, 2, 0}};
     for (Vec3& p : huge) p *= 1e300;
-    for (const Face& t : triangulate(huge)) EXPECT_GT(triangleArea(huge[t[0]], huge[t[1]], huge[t[2]]), 1e300);  // the area overflows: inf, never 0
+    for (const Face& t : triangulate(huge))
+        EXPECT_GT(triangleArea(huge[t[0]], huge[t[1]], huge[t[2]]), 1e300);  // the area overflows: inf, never 0
 }
 
 TEST(Triangulate, NonConvexPolygonStaysInside)
@@ -111,7 +112,8 @@ std::vector<Vec3> cShape(int step = 20)
 {
     std::vector<Vec3> p;
     for (int deg = 0; deg <= 300; deg += step) p.push_back({std::cos(deg * M_PI / 180), std::sin(deg * M_PI / 180), 0});
-    for (int deg = 300; deg >= 0; deg -= step) p.push_back({0.5 * std::cos(deg * M_PI / 180), 0.5 * std::sin(deg * M_PI / 180), 0});
+    for (int deg = 300; deg >= 0; deg -= step)
+        p.push_back({0.5 * std::cos(deg * M_PI / 180), 0.5 * std::sin(deg * M_PI / 180), 0});
     return p;
 }
 
@@ -140,7 +142,8 @@ TEST(Triangulate, ConcavePolygonsOfAnySizeTriangulateWithoutOverlap)
     // A comb: 200 long thin teeth over a base, each gap a deep concavity.
     std::vector<Vec3> comb{{-1, -1, 0}, {201, -1, 0}, {201, 0, 0}};
     for (int t = 199; t >= 0; --t)
-        for (const Vec3& c : {Vec3(t + 0.75, 0, 0), Vec3(t + 0.75, 10, 0), Vec3(t + 0.25, 10, 0), Vec3(t + 0.25, 0, 0)}) comb.push_back(c);
+        for (const Vec3& c : {Vec3(t + 0.75, 0, 0), Vec3(t + 0.75, 10, 0), Vec3(t + 0.25, 10, 0), Vec3(t + 0.25, 0, 0)})
+            comb.push_back(c);
     comb.push_back({-1, 0, 0});
     expectSimpleTriangulation(comb);
 }
@@ -163,10 +166,10 @@ TEST(Triangulate, RandomStarShapedPolygonsAddUpToTheirArea)
 
 TEST(Triangulate, SelfIntersectingPolygonsAreSaidAndStillTriangulated)
 {
-    for (const std::vector<Vec3>& bad : std::vector<std::vector<Vec3>>{
-             {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}},                 // a bow tie
-             {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0, 0}, {0, 2, 0}},      // a corner on another edge
-             {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {0, 1, 0}}}) {   // a repeated corner
+    for (const std::vector<Vec3>& bad :
+         std::vector<std::vector<Vec3>>{{{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}},                // a bow tie
+                                        {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0, 0}, {0, 2, 0}},     // a corner on another edge
+                                        {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {0, 1, 0}}}) {  // a repeated corner
         std::vector<Face> faces;
         EXPECT_EQ(triangulateInOrder(bad, faces), PolygonShape::NotSimple);
         EXPECT_EQ(faces.size(), bad.size() - 2);
@@ -209,7 +212,8 @@ TEST(Triangulate, StraightCornersOfLargePolygonsMakeNoZeroAreaTriangle)
     expectSimpleTriangulation(l);  // reversed counts zero-area triangles too
     std::vector<Vec3> comb{{-1, -1, 0}, {21, -1, 0}, {21, 0, 0}};
     for (int t = 19; t >= 0; --t) {
-        for (const Vec3& c : {Vec3(t + 0.75, 0, 0), Vec3(t + 0.75, 10, 0), Vec3(t + 0.25, 10, 0), Vec3(t + 0.25, 0, 0)}) comb.push_back(c);
+        for (const Vec3& c : {Vec3(t + 0.75, 0, 0), Vec3(t + 0.75, 10, 0), Vec3(t + 0.25, 10, 0), Vec3(t + 0.25, 0, 0)})
+            comb.push_back(c);
         for (int k = 1; k < 50; ++k) comb.push_back({t + 0.25 - 0.5 * k / 50, 0, 0});
     }
     comb.push_back({-1, 0, 0});

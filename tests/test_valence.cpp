@@ -56,7 +56,8 @@ TriMesh hexTorus(int n, int m)
     for (int j = 0; j < m; ++j)
         for (int i = 0; i < n; ++i) {
             const double u = 2 * pi * (i + 0.5 * (j % 2)) / n, v = 2 * pi * j / m;
-            t.vertices.emplace_back((1 + 0.3 * std::cos(v)) * std::cos(u), (1 + 0.3 * std::cos(v)) * std::sin(u), 0.3 * std::sin(v));
+            t.vertices.emplace_back((1 + 0.3 * std::cos(v)) * std::cos(u), (1 + 0.3 * std::cos(v)) * std::sin(u),
+                                    0.3 * std::sin(v));
         }
     auto id = [n, m](int i, int j) { return ((j + m) % m) * n + (i + n) % n; };
     for (int j = 0; j < m; ++j)

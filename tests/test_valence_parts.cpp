@@ -43,8 +43,8 @@ auto snapshot(const EditableMesh<VertexData>& m, DataKey&& key)
 }
 
 auto meshVertexKey = [](const MeshVertex& d) {
-    return std::make_tuple(d.closest.point, d.closest.face, d.closest.barycentric, d.closest.squaredDistance, d.normal,
-                           d.role, d.onBorder, d.manifold, d.valence);
+    return std::make_tuple(d.closest.point, d.closest.face, d.closest.barycentric, d.closest.squaredDistance, d.normal, d.role,
+                           d.onBorder, d.manifold, d.valence);
 };
 
 //! A torus (R = 1, r = 0.35) of n x m vertices, rows alternating their offset: every vertex of
@@ -149,7 +149,8 @@ TEST(ValenceMesh, FlipCollapseSplitAndSmoothingAreUndoneExactly)
         mesh.ring(a, r);
         for (int b : r.verts) {
             int gain, c, d, f1, f2, keep, remove;
-            if (a < b && flip.type == OpType::None && evaluateFlip(mesh, a, b, gain, c, d, f1, f2)) flip = {OpType::Flip, a, b, -1, gain};
+            if (a < b && flip.type == OpType::None && evaluateFlip(mesh, a, b, gain, c, d, f1, f2))
+                flip = {OpType::Flip, a, b, -1, gain};
             if (a < b && collapse.type == OpType::None && evaluateCollapse(mesh, a, b, gain, keep, remove) &&
                 std::abs(a - flip.a) > 40)
                 collapse = {OpType::Collapse, a, b, -1, gain};

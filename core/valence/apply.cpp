@@ -73,9 +73,12 @@ int OperationApplier::apply(const std::vector<Candidate>& candidates, int round,
         ++opCounter_;  // changes are stamped after the count, failures before it
         for (int k = 0; k < cand.length; ++k) {
             const Op& op = cand.ops[k];
-            if (op.type == OpType::Flip) ++stats.flips;
-            else if (op.type == OpType::Collapse) ++stats.collapses;
-            else if (op.type == OpType::Split) ++stats.splits;
+            if (op.type == OpType::Flip)
+                ++stats.flips;
+            else if (op.type == OpType::Collapse)
+                ++stats.collapses;
+            else if (op.type == OpType::Split)
+                ++stats.splits;
         }
         // Lock the changed vertices for this round (their rings are no longer the ones the
         // candidates were computed on) and mark their neighbourhood as changed.

@@ -9,9 +9,9 @@ size_t CandidateHash::operator()(const Candidate& k) const
     std::uint64_t h = static_cast<std::uint64_t>(k.length);
     for (int i = 0; i < k.length; ++i) {
         const Op& op = k.ops[i];
-        for (std::int64_t x : {static_cast<std::int64_t>(op.type), static_cast<std::int64_t>(op.a),
-                               static_cast<std::int64_t>(op.b), static_cast<std::int64_t>(op.c),
-                               static_cast<std::int64_t>(op.gain)})
+        for (std::int64_t x :
+             {static_cast<std::int64_t>(op.type), static_cast<std::int64_t>(op.a), static_cast<std::int64_t>(op.b),
+              static_cast<std::int64_t>(op.c), static_cast<std::int64_t>(op.gain)})
             h = (h ^ static_cast<std::uint64_t>(x)) * 0x100000001B3ull + 0x9E3779B97F4A7C15ull;
     }
     return static_cast<size_t>(h);
@@ -42,8 +42,10 @@ bool evaluateFlip(const ValenceMesh& mesh, int a, int b, int& gain, int& c, int&
         const Face& t = mesh.face(f);
         for (int k = 0; k < 3; ++k) {
             if (t[k] != a) continue;
-            if (t[(k + 1) % 3] == b) f1 = f, c = t[(k + 2) % 3], ++count;       // (a, b, c)
-            else if (t[(k + 2) % 3] == b) f2 = f, d = t[(k + 1) % 3], ++count;  // (b, a, d)
+            if (t[(k + 1) % 3] == b)
+                f1 = f, c = t[(k + 2) % 3], ++count;  // (a, b, c)
+            else if (t[(k + 2) % 3] == b)
+                f2 = f, d = t[(k + 1) % 3], ++count;  // (b, a, d)
         }
     }
     // Border edges (one face) are never flipped.
@@ -68,8 +70,10 @@ bool evaluateCollapse(const ValenceMesh& mesh, int a, int b, int& gain, int& kee
         const Face& t = mesh.face(f);
         for (int k = 0; k < 3; ++k) {
             if (t[k] != a) continue;
-            if (t[(k + 1) % 3] == b) c = t[(k + 2) % 3], ++count;
-            else if (t[(k + 2) % 3] == b) d = t[(k + 1) % 3], ++count;
+            if (t[(k + 1) % 3] == b)
+                c = t[(k + 2) % 3], ++count;
+            else if (t[(k + 2) % 3] == b)
+                d = t[(k + 1) % 3], ++count;
         }
     }
     if (count != 2 || c < 0 || d < 0 || c == d) return false;

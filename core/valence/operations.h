@@ -99,9 +99,9 @@ private:
     ValenceMesh& mesh_;
     SagGuard& sag_;
     const ValenceParams& params_;
-    std::vector<int> lockStamp_;           //!< per vertex, the round it was last changed in
-    std::vector<long long> changeStamp_;   //!< per vertex, opCounter_ when it or a neighbour last changed
-    long long opCounter_ = 0;              //!< operations committed so far
+    std::vector<int> lockStamp_;          //!< per vertex, the round it was last changed in
+    std::vector<long long> changeStamp_;  //!< per vertex, opCounter_ when it or a neighbour last changed
+    long long opCounter_ = 0;             //!< operations committed so far
     //! Candidates that failed the geometric checks, with opCounter_ at the time: retried only
     //! once one of their vertices changed.
     std::unordered_map<Candidate, long long, CandidateHash> failed_;

@@ -28,9 +28,9 @@ struct Relaxation {
     std::vector<int> neighbourFirst, neighbours;  //!< CSR: each alive vertex's ring (fixed connectivity)
     double fieldFactor = 0;                       //!< E_field's gradient in mesh units
     double maxStep = 0, maxDrift = 0, minAngle = 0;
-    std::vector<double> sagLimit;                 //!< per face (SagGuard::relaxationLimits)
+    std::vector<double> sagLimit;  //!< per face (SagGuard::relaxationLimits)
     std::vector<Vec3> startPos;
-    std::vector<Vec3> lastMove;                   //!< momentum; zero after a revert
+    std::vector<Vec3> lastMove;  //!< momentum; zero after a revert
     //! The field at each vertex, and where it was interpolated (face -1: not yet): a vertex whose
     //! closest point has not changed since (it stopped, or was put back) keeps its frame.
     std::vector<Vec3> frameN, frameD, frameBarycentric;

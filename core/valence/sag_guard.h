@@ -44,11 +44,11 @@ public:
 private:
     static constexpr unsigned char kAllExact = 0xF;
     struct Entry {
-        Face face = {-1, -1, -1};        //!< the corners the entry is for
-        std::array<Vec3, 3> corners;     //!< their positions when the bounds were measured
-        std::array<double, 4> bound;     //!< per sag point (sagPoints' order), at least its distance
-        std::array<int, 4> walkStart;    //!< per sag point, the face its last walk ended on (-1: none)
-        unsigned char exact = 0;         //!< bit k: bound[k] is point k's exact distance
+        Face face = {-1, -1, -1};      //!< the corners the entry is for
+        std::array<Vec3, 3> corners;   //!< their positions when the bounds were measured
+        std::array<double, 4> bound;   //!< per sag point (sagPoints' order), at least its distance
+        std::array<int, 4> walkStart;  //!< per sag point, the face its last walk ended on (-1: none)
+        unsigned char exact = 0;       //!< bit k: bound[k] is point k's exact distance
     };
 
     //! The points whose distance to the input makes face f's sag (centroid, midpoints of edges

@@ -12,9 +12,11 @@ namespace fieldcvt::valence {
 
 ValenceMesh::ValenceMesh(const TriMesh& mesh, const std::vector<VertexRole>& roles, const ValenceSurface& surface,
                          int borderWeight, const std::vector<int>& faceHints)
-    : EditableMesh<MeshVertex>(mesh.vertices, mesh.faces), surface_(&surface),
+    : EditableMesh<MeshVertex>(mesh.vertices, mesh.faces),
+      surface_(&surface),
       walk_(std::make_shared<const SurfaceWalk>(surface.input)),
-      inputNormals_(std::make_shared<const std::vector<Vec3>>(vertexNormals(surface.input))), borderWeight_(borderWeight)
+      inputNormals_(std::make_shared<const std::vector<Vec3>>(vertexNormals(surface.input))),
+      borderWeight_(borderWeight)
 {
     // Border vertices (on an edge with one face) aim at valence 4 (§4.4). They keep the places
     // the border's 1D CVT gave them, so a Free one is promoted to Boundary: the border is never

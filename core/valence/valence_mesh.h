@@ -46,8 +46,8 @@ class ValenceMesh : public EditableMesh<MeshVertex> {
 public:
     //! `mesh` and `roles` checked by the caller (indices, sizes, no repeated corner); Free
     //! vertices on the mesh's border are put on `surface.border` and become Boundary.
-    ValenceMesh(const TriMesh& mesh, const std::vector<VertexRole>& roles, const ValenceSurface& surface,
-                int borderWeight, const std::vector<int>& faceHints);
+    ValenceMesh(const TriMesh& mesh, const std::vector<VertexRole>& roles, const ValenceSurface& surface, int borderWeight,
+                const std::vector<int>& faceHints);
 
     const ValenceSurface& surface() const { return *surface_; }
     //! Distance bounds on the input, shared by the copies of the mesh.

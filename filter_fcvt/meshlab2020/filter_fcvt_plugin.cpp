@@ -9,41 +9,28 @@
 
 namespace {
 
-fcvt_plugin::FilterId filterId(int id)
-{
-    return static_cast<fcvt_plugin::FilterId>(id);
-}
+fcvt_plugin::FilterId filterId(int id) { return static_cast<fcvt_plugin::FilterId>(id); }
 
 // The neutral parameter definitions as MeshLab 2020.09's Rich* parameters.
-void addRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, MeshDocument* md,
-                       MeshModel* current, RichParameterList& list)
+void addRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, MeshDocument* md, MeshModel* current,
+                       RichParameterList& list)
 {
     using fcvt_plugin::ParamDef;
     for (const ParamDef& p : defs) {
         switch (p.type) {
-        case ParamDef::Int:
-            list.addParam(RichInt(p.name, int(p.value), p.label, p.tooltip));
-            break;
-        case ParamDef::Float:
-            list.addParam(RichFloat(p.name, float(p.value), p.label, p.tooltip));
-            break;
-        case ParamDef::Bool:
-            list.addParam(RichBool(p.name, p.value != 0, p.label, p.tooltip));
-            break;
-        case ParamDef::Enum:
-            list.addParam(RichEnum(p.name, int(p.value), p.enumLabels, p.label, p.tooltip));
-            break;
+        case ParamDef::Int: list.addParam(RichInt(p.name, int(p.value), p.label, p.tooltip)); break;
+        case ParamDef::Float: list.addParam(RichFloat(p.name, float(p.value), p.label, p.tooltip)); break;
+        case ParamDef::Bool: list.addParam(RichBool(p.name, p.value != 0, p.label, p.tooltip)); break;
+        case ParamDef::Enum: list.addParam(RichEnum(p.name, int(p.value), p.enumLabels, p.label, p.tooltip)); break;
         case ParamDef::AbsPerc:
-            list.addParam(RichAbsPerc(p.name, float(p.value), float(p.min), float(p.max), p.label,
-                                      p.tooltip));
+            list.addParam(RichAbsPerc(p.name, float(p.value), float(p.min), float(p.max), p.label, p.tooltip));
             break;
         case ParamDef::Mesh:
             // The default is the current layer (the measured layer itself: no distances).
             if (md != nullptr && current != nullptr)
                 list.addParam(RichMesh(p.name, current, md, p.label, p.tooltip));
             else  // no document: a parameter without a mesh (only for completeness of the overload)
-                list.addParam(RichMesh(p.name, static_cast<MeshModel*>(nullptr), nullptr, p.label,
-                                       p.tooltip));
+                list.addParam(RichMesh(p.name, static_cast<MeshModel*>(nullptr), nullptr, p.label, p.tooltip));
             break;
         }
     }
@@ -53,10 +40,7 @@ class Values : public fcvt_plugin::ParamValues {
 public:
     explicit Values(const RichParameterList& par) : par_(par) {}
     bool hasParameter(const char* name) const override { return par_.hasParameter(name); }
-    bool isBool(const char* name) const override
-    {
-        return par_.getParameterByName(name).value().isBool();
-    }
+    bool isBool(const char* name) const override { return par_.getParameterByName(name).value().isBool(); }
     int getInt(const char* name) const override { return par_.getInt(name); }
     double getFloat(const char* name) const override { return par_.getFloat(name); }
     bool getBool(const char* name) const override { return par_.getBool(name); }
@@ -73,8 +57,7 @@ private:
 // MeshFilterInterface::Log is protected: the log adapter lives in the plugin's scope.
 class FilterFcvtPluginLog : public fcvt_plugin::FilterLog {
 public:
-    explicit FilterFcvtPluginLog(std::function<void(bool, const std::string&)> log)
-        : log_(std::move(log)) {}
+    explicit FilterFcvtPluginLog(std::function<void(bool, const std::string&)> log) : log_(std::move(log)) {}
     void info(const QString& text) override { log_(false, text.toStdString()); }
     void warning(const QString& text) override { log_(true, text.toStdString()); }
 
@@ -84,59 +67,33 @@ private:
 
 FilterFcvtPlugin::FilterFcvtPlugin()
 {
-    for (fcvt_plugin::FilterId id : fcvt_plugin::kFilterIds)
-        typeList << id;
-    for (FilterIDType tt : types())
-        actionList << new QAction(filterName(tt), this);
+    for (fcvt_plugin::FilterId id : fcvt_plugin::kFilterIds) typeList << id;
+    for (FilterIDType tt : types()) actionList << new QAction(filterName(tt), this);
 }
 
-QString FilterFcvtPlugin::pluginName() const
-{
-    return fcvt_plugin::pluginName();
-}
+QString FilterFcvtPlugin::pluginName() const { return fcvt_plugin::pluginName(); }
 
-QString FilterFcvtPlugin::filterName(FilterIDType filter) const
-{
-    return fcvt_plugin::filterName(filterId(filter));
-}
+QString FilterFcvtPlugin::filterName(FilterIDType filter) const { return fcvt_plugin::filterName(filterId(filter)); }
 
-QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const
-{
-    return fcvt_plugin::filterInfo(filterId(filter));
-}
+QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const { return fcvt_plugin::filterInfo(filterId(filter)); }
 
 MeshFilterInterface::FilterClass FilterFcvtPlugin::getClass(QAction* a)
 {
     switch (fcvt_plugin::filterKind(filterId(ID(a)))) {
-    case fcvt_plugin::FilterKind::Remeshing:
-        return MeshFilterInterface::Remeshing;
-    case fcvt_plugin::FilterKind::Normal:
-        return MeshFilterInterface::Normal;
+    case fcvt_plugin::FilterKind::Remeshing: return MeshFilterInterface::Remeshing;
+    case fcvt_plugin::FilterKind::Normal: return MeshFilterInterface::Normal;
     case fcvt_plugin::FilterKind::MeasureAndVertexColouring:
-    default:
-        return FilterClass(MeshFilterInterface::Measure | MeshFilterInterface::VertexColoring);
+    default: return FilterClass(MeshFilterInterface::Measure | MeshFilterInterface::VertexColoring);
     }
 }
 
-MeshFilterInterface::FILTER_ARITY FilterFcvtPlugin::filterArity(QAction*) const
-{
-    return SINGLE_MESH;
-}
+MeshFilterInterface::FILTER_ARITY FilterFcvtPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
 
-int FilterFcvtPlugin::getRequirements(QAction*)
-{
-    return MeshModel::MM_NONE;
-}
+int FilterFcvtPlugin::getRequirements(QAction*) { return MeshModel::MM_NONE; }
 
-int FilterFcvtPlugin::getPreConditions(QAction* a) const
-{
-    return fcvt_plugin::preConditions(filterId(ID(a)));
-}
+int FilterFcvtPlugin::getPreConditions(QAction* a) const { return fcvt_plugin::preConditions(filterId(ID(a))); }
 
-int FilterFcvtPlugin::postCondition(QAction* a) const
-{
-    return fcvt_plugin::postCondition(filterId(ID(a)));
-}
+int FilterFcvtPlugin::postCondition(QAction* a) const { return fcvt_plugin::postCondition(filterId(ID(a))); }
 
 void FilterFcvtPlugin::initParameterSet(QAction* a, MeshModel& m, RichParameterList& par)
 {
@@ -148,8 +105,7 @@ void FilterFcvtPlugin::initParameterSet(QAction* a, MeshDocument& md, RichParame
     addRichParameters(fcvt_plugin::parameters(filterId(ID(a)), md.mm()), &md, md.mm(), par);
 }
 
-bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par,
-                                   vcg::CallBackPos* cb)
+bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb)
 {
     // Nothing may escape into MeshLab: the GUI catches only std::bad_alloc and meshlabserver
     // nothing at all, so an exception would terminate the application.

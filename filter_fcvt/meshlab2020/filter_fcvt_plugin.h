@@ -25,8 +25,7 @@ public:
     // dereference md.mm() even when no mesh is loaded.
     void initParameterSet(QAction* a, MeshModel& m, RichParameterList& par) override;
     void initParameterSet(QAction* a, MeshDocument& md, RichParameterList& par) override;
-    bool applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par,
-                     vcg::CallBackPos* cb) override;
+    bool applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb) override;
 
 private:
     //! Fails the filter: sets errorMessage and also logs it.

@@ -7,39 +7,26 @@
 
 namespace {
 
-fcvt_plugin::FilterId filterId(int id)
-{
-    return static_cast<fcvt_plugin::FilterId>(id);
-}
+fcvt_plugin::FilterId filterId(int id) { return static_cast<fcvt_plugin::FilterId>(id); }
 
 // The neutral parameter definitions as MeshLab 2022.02's Rich* parameters.
-RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs,
-                                   const MeshDocument* md, const MeshModel* current)
+RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, const MeshDocument* md,
+                                   const MeshModel* current)
 {
     using fcvt_plugin::ParamDef;
     RichParameterList list;
     for (const ParamDef& p : defs) {
         switch (p.type) {
-        case ParamDef::Int:
-            list.addParam(RichInt(p.name, int(p.value), p.label, p.tooltip, p.advanced));
-            break;
-        case ParamDef::Float:
-            list.addParam(RichFloat(p.name, Scalarm(p.value), p.label, p.tooltip, p.advanced));
-            break;
-        case ParamDef::Bool:
-            list.addParam(RichBool(p.name, p.value != 0, p.label, p.tooltip, p.advanced));
-            break;
-        case ParamDef::Enum:
-            list.addParam(RichEnum(p.name, int(p.value), p.enumLabels, p.label, p.tooltip, p.advanced));
-            break;
+        case ParamDef::Int: list.addParam(RichInt(p.name, int(p.value), p.label, p.tooltip, p.advanced)); break;
+        case ParamDef::Float: list.addParam(RichFloat(p.name, Scalarm(p.value), p.label, p.tooltip, p.advanced)); break;
+        case ParamDef::Bool: list.addParam(RichBool(p.name, p.value != 0, p.label, p.tooltip, p.advanced)); break;
+        case ParamDef::Enum: list.addParam(RichEnum(p.name, int(p.value), p.enumLabels, p.label, p.tooltip, p.advanced)); break;
         case ParamDef::AbsPerc:
-            list.addParam(RichAbsPerc(p.name, Scalarm(p.value), Scalarm(p.min), Scalarm(p.max),
-                                      p.label, p.tooltip, p.advanced));
+            list.addParam(RichAbsPerc(p.name, Scalarm(p.value), Scalarm(p.min), Scalarm(p.max), p.label, p.tooltip, p.advanced));
             break;
         case ParamDef::Mesh:
             // The default is the current layer (the measured layer itself: no distances).
-            list.addParam(RichMesh(p.name, current != nullptr ? unsigned(current->id()) : 0u, md,
-                                   p.label, p.tooltip));
+            list.addParam(RichMesh(p.name, current != nullptr ? unsigned(current->id()) : 0u, md, p.label, p.tooltip));
             break;
         }
     }
@@ -50,10 +37,7 @@ class Values : public fcvt_plugin::ParamValues {
 public:
     Values(const RichParameterList& par, MeshDocument& md) : par_(par), md_(md) {}
     bool hasParameter(const char* name) const override { return par_.hasParameter(name); }
-    bool isBool(const char* name) const override
-    {
-        return par_.getParameterByName(name).value().isBool();
-    }
+    bool isBool(const char* name) const override { return par_.getParameterByName(name).value().isBool(); }
     int getInt(const char* name) const override { return par_.getInt(name); }
     double getFloat(const char* name) const override { return double(par_.getFloat(name)); }
     bool getBool(const char* name) const override { return par_.getBool(name); }
@@ -70,10 +54,7 @@ class Log : public fcvt_plugin::FilterLog {
 public:
     explicit Log(const FilterPlugin& plugin) : plugin_(plugin) {}
     void info(const QString& text) override { plugin_.log(GLLogStream::FILTER, text.toStdString()); }
-    void warning(const QString& text) override
-    {
-        plugin_.log(GLLogStream::WARNING, text.toStdString());
-    }
+    void warning(const QString& text) override { plugin_.log(GLLogStream::WARNING, text.toStdString()); }
 
 private:
     const FilterPlugin& plugin_;
@@ -83,59 +64,33 @@ private:
 
 FilterFcvtPlugin::FilterFcvtPlugin()
 {
-    for (fcvt_plugin::FilterId id : fcvt_plugin::kFilterIds)
-        typeList.push_back(id);
-    for (ActionIDType tt : types())
-        actionList.push_back(new QAction(filterName(tt), this));
+    for (fcvt_plugin::FilterId id : fcvt_plugin::kFilterIds) typeList.push_back(id);
+    for (ActionIDType tt : types()) actionList.push_back(new QAction(filterName(tt), this));
 }
 
-QString FilterFcvtPlugin::pluginName() const
-{
-    return fcvt_plugin::pluginName();
-}
+QString FilterFcvtPlugin::pluginName() const { return fcvt_plugin::pluginName(); }
 
-QString FilterFcvtPlugin::filterName(ActionIDType filter) const
-{
-    return fcvt_plugin::filterName(filterId(filter));
-}
+QString FilterFcvtPlugin::filterName(ActionIDType filter) const { return fcvt_plugin::filterName(filterId(filter)); }
 
-QString FilterFcvtPlugin::filterInfo(ActionIDType filter) const
-{
-    return fcvt_plugin::filterInfo(filterId(filter));
-}
+QString FilterFcvtPlugin::filterInfo(ActionIDType filter) const { return fcvt_plugin::filterInfo(filterId(filter)); }
 
 FilterPlugin::FilterClass FilterFcvtPlugin::getClass(const QAction* a) const
 {
     switch (fcvt_plugin::filterKind(filterId(ID(a)))) {
-    case fcvt_plugin::FilterKind::Remeshing:
-        return FilterPlugin::Remeshing;
-    case fcvt_plugin::FilterKind::Normal:
-        return FilterPlugin::Normal;
+    case fcvt_plugin::FilterKind::Remeshing: return FilterPlugin::Remeshing;
+    case fcvt_plugin::FilterKind::Normal: return FilterPlugin::Normal;
     case fcvt_plugin::FilterKind::MeasureAndVertexColouring:
-    default:
-        return FilterClass(FilterPlugin::Measure | FilterPlugin::VertexColoring);
+    default: return FilterClass(FilterPlugin::Measure | FilterPlugin::VertexColoring);
     }
 }
 
-FilterPlugin::FilterArity FilterFcvtPlugin::filterArity(const QAction*) const
-{
-    return SINGLE_MESH;
-}
+FilterPlugin::FilterArity FilterFcvtPlugin::filterArity(const QAction*) const { return SINGLE_MESH; }
 
-int FilterFcvtPlugin::getRequirements(const QAction*)
-{
-    return MeshModel::MM_NONE;
-}
+int FilterFcvtPlugin::getRequirements(const QAction*) { return MeshModel::MM_NONE; }
 
-int FilterFcvtPlugin::getPreConditions(const QAction* a) const
-{
-    return fcvt_plugin::preConditions(filterId(ID(a)));
-}
+int FilterFcvtPlugin::getPreConditions(const QAction* a) const { return fcvt_plugin::preConditions(filterId(ID(a))); }
 
-int FilterFcvtPlugin::postCondition(const QAction* a) const
-{
-    return fcvt_plugin::postCondition(filterId(ID(a)));
-}
+int FilterFcvtPlugin::postCondition(const QAction* a) const { return fcvt_plugin::postCondition(filterId(ID(a))); }
 
 RichParameterList FilterFcvtPlugin::initParameterList(const QAction* a, const MeshModel& m)
 {
@@ -147,10 +102,8 @@ RichParameterList FilterFcvtPlugin::initParameterList(const QAction* a, const Me
     return toRichParameters(fcvt_plugin::parameters(filterId(ID(a)), md.mm()), &md, md.mm());
 }
 
-std::map<std::string, QVariant> FilterFcvtPlugin::applyFilter(const QAction* a,
-                                                              const RichParameterList& par,
-                                                              MeshDocument& md, unsigned int&,
-                                                              vcg::CallBackPos* cb)
+std::map<std::string, QVariant> FilterFcvtPlugin::applyFilter(const QAction* a, const RichParameterList& par, MeshDocument& md,
+                                                              unsigned int&, vcg::CallBackPos* cb)
 {
     // MeshLab 2022.02 reports a failed filter by the MLException it throws (the GUI shows its
     // text, pymeshlab raises it); anything else would end the application. The message also goes

@@ -24,7 +24,6 @@ public:
     // mesh is loaded.
     RichParameterList initParameterList(const QAction* a, const MeshModel& m) override;
     RichParameterList initParameterList(const QAction* a, const MeshDocument& md) override;
-    std::map<std::string, QVariant> applyFilter(const QAction* a, const RichParameterList& par,
-                                                MeshDocument& md, unsigned int& postConditionMask,
-                                                vcg::CallBackPos* cb) override;
+    std::map<std::string, QVariant> applyFilter(const QAction* a, const RichParameterList& par, MeshDocument& md,
+                                                unsigned int& postConditionMask, vcg::CallBackPos* cb) override;
 };

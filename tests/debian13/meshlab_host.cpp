@@ -56,43 +56,35 @@ int maskBit(const std::string& flag)
 {
     using M = vcg::tri::io::Mask;
     static const std::map<std::string, int> bits = {
-        {"vc", M::IOM_VERTCOLOR},     {"vf", M::IOM_VERTFLAGS},    {"vq", M::IOM_VERTQUALITY},
-        {"vn", M::IOM_VERTNORMAL},    {"vt", M::IOM_VERTTEXCOORD}, {"vr", M::IOM_VERTRADIUS},
-        {"fc", M::IOM_FACECOLOR},     {"ff", M::IOM_FACEFLAGS},    {"fq", M::IOM_FACEQUALITY},
-        {"fn", M::IOM_FACENORMAL},    {"wc", M::IOM_WEDGCOLOR},    {"wn", M::IOM_WEDGNORMAL},
-        {"wt", M::IOM_WEDGTEXCOORD},  {"mp", M::IOM_BITPOLYGONAL},
+        {"vc", M::IOM_VERTCOLOR},    {"vf", M::IOM_VERTFLAGS},    {"vq", M::IOM_VERTQUALITY}, {"vn", M::IOM_VERTNORMAL},
+        {"vt", M::IOM_VERTTEXCOORD}, {"vr", M::IOM_VERTRADIUS},   {"fc", M::IOM_FACECOLOR},   {"ff", M::IOM_FACEFLAGS},
+        {"fq", M::IOM_FACEQUALITY},  {"fn", M::IOM_FACENORMAL},   {"wc", M::IOM_WEDGCOLOR},   {"wn", M::IOM_WEDGNORMAL},
+        {"wt", M::IOM_WEDGTEXCOORD}, {"mp", M::IOM_BITPOLYGONAL},
     };
     const auto it = bits.find(flag);
-    if (it == bits.end())
-        die(QString("unknown -m flag %1").arg(QString::fromStdString(flag)));
+    if (it == bits.end()) die(QString("unknown -m flag %1").arg(QString::fromStdString(flag)));
     return it->second;
 }
 
-bool isOption(const char* a)
-{
-    return a[0] == '-' && a[1] != '\0';
-}
+bool isOption(const char* a) { return a[0] == '-' && a[1] != '\0'; }
 
 void printLog(const GLLogStream& log)
 {
     QStringList lines;
     log.print(lines);
-    for (const QString& line : lines)
-        std::fprintf(stdout, "%s\n", qUtf8Printable(line));
+    for (const QString& line : lines) std::fprintf(stdout, "%s\n", qUtf8Printable(line));
     std::fflush(stdout);
 }
 
 void dumpFilters(PluginManager& pm, const QString& path)
 {
     FILE* fp = std::fopen(qUtf8Printable(path), "w");
-    if (fp == nullptr)
-        die("cannot write " + path);
+    if (fp == nullptr) die("cannot write " + path);
     MeshDocument md;  // no mesh, as meshlabserver -d
     int i = 0;
     std::fprintf(fp, "/*! \\mainpage MeshLab Filter Documentation\n");
     for (FilterPlugin* fp2 : pm.filterPluginIterator()) {
-        if (fp2->pluginFileInfo().fileName() != "libfilter_fcvt.so")
-            continue;
+        if (fp2->pluginFileInfo().fileName() != "libfilter_fcvt.so") continue;
         for (QAction* action : fp2->actions()) {
             std::fprintf(fp, "\n\\section f%i %s \n\n%s\n", i++, qUtf8Printable(action->text()),
                          qUtf8Printable(fp2->filterInfo(action)));
@@ -110,34 +102,27 @@ void dumpFilters(PluginManager& pm, const QString& path)
     std::fclose(fp);
 }
 
-bool progress(const int, const char*)
-{
-    return true;
-}
+bool progress(const int, const char*) { return true; }
 
 void runScript(PluginManager& pm, MeshDocument& md, const QString& script)
 {
     FilterScript filters;
-    if (!filters.open(script))
-        die("File " + script + " was not found or is not a filter script.");
+    if (!filters.open(script)) die("File " + script + " was not found or is not a filter script.");
     std::fprintf(stdout, "Starting Script of %i actions", int(filters.size()));
     GLLogStream log;
     for (FilterNameParameterValuesPair& pair : filters) {
         const QString name = pair.filterName();
         std::fprintf(stdout, "filter: %s\n", qUtf8Printable(name));
         QAction* action = pm.filterAction(name);
-        if (action == nullptr)
-            die("filter " + name + " not found");
+        if (action == nullptr) die("filter " + name + " not found");
         FilterPlugin* filter = pm.getFilterPluginFromAction(action);
         filter->setLog(&log);
-        if (md.mm() != nullptr)
-            md.mm()->updateDataMask(filter->getRequirements(action));
+        if (md.mm() != nullptr) md.mm()->updateDataMask(filter->getRequirements(action));
         // The filter's own list (its defaults) with the script's values set over it.
         RichParameterList params = filter->initParameterList(action, md);
         for (const RichParameter& given : pair.second) {
             if (!params.hasParameter(given.name()))
-                die(QString("The parameter %1 in the script is not a parameter of the filter %2.")
-                        .arg(given.name(), name));
+                die(QString("The parameter %1 in the script is not a parameter of the filter %2.").arg(given.name(), name));
             params.setValue(given.name(), given.value());
         }
         unsigned int postConditionMask = MeshModel::MM_UNKNOWN;
@@ -163,15 +148,12 @@ void save(PluginManager& pm, MeshDocument& md, const Output& out)
         int index = 0;
         const int wanted = out.layer == -2 ? int(md.meshNumber()) - 1 : out.layer;
         for (auto it = md.meshBegin(); it != md.meshEnd(); ++it, ++index)
-            if (index == wanted)
-                m = &*it;
+            if (index == wanted) m = &*it;
     }
-    if (m == nullptr)
-        die("Output mesh " + out.file + " has NOT been saved. A not existent layer has been requested to be saved");
+    if (m == nullptr) die("Output mesh " + out.file + " has NOT been saved. A not existent layer has been requested to be saved");
     const QString ext = QFileInfo(out.file).suffix().toLower();
     IOPlugin* io = pm.outputMeshPlugin(ext);
-    if (io == nullptr)
-        die("no plugin saves ." + ext);
+    if (io == nullptr) die("no plugin saves ." + ext);
     int capability = 0, defaultBits = 0;
     io->exportMaskCapability(ext, capability, defaultBits);
     const RichParameterList params = io->initSaveParameter(ext, *m);
@@ -180,8 +162,8 @@ void save(PluginManager& pm, MeshDocument& md, const Output& out)
     } catch (const MLException& e) {
         die(QString("Output mesh %1 has NOT been saved: %2").arg(out.file, e.what()));
     }
-    std::fprintf(stdout, "Mesh %s saved as %s (%i vn %i fn)\n", qUtf8Printable(m->fullName()),
-                 qUtf8Printable(out.file), m->cm.vn, m->cm.fn);
+    std::fprintf(stdout, "Mesh %s saved as %s (%i vn %i fn)\n", qUtf8Printable(m->fullName()), qUtf8Printable(out.file), m->cm.vn,
+                 m->cm.fn);
 }
 
 }  // namespace
@@ -189,8 +171,7 @@ void save(PluginManager& pm, MeshDocument& md, const Output& out)
 int main(int argc, char* argv[])
 {
     // No display needed: every filter here runs without OpenGL.
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
 
     QString pluginDir, dump, script;
@@ -219,8 +200,7 @@ int main(int argc, char* argv[])
             }
             if (i + 1 < argc && std::string(argv[i + 1]) == "-m") {
                 ++i;
-                while (i + 1 < argc && !isOption(argv[i + 1]))
-                    out.mask |= maskBit(argv[++i]);
+                while (i + 1 < argc && !isOption(argv[i + 1])) out.mask |= maskBit(argv[++i]);
             }
             outputs.push_back(out);
         } else {
@@ -229,8 +209,7 @@ int main(int argc, char* argv[])
                     .arg(QString::fromStdString(a)));
         }
     }
-    if (pluginDir.isEmpty())
-        die("-P PLUGIN_DIR is required");
+    if (pluginDir.isEmpty()) die("-P PLUGIN_DIR is required");
 
     PluginManager& pm = meshlab::pluginManagerInstance();
     const QDir dir(pluginDir);
@@ -243,24 +222,20 @@ int main(int argc, char* argv[])
     }
     std::fprintf(stderr, "%u plugins loaded\n", pm.size());
 
-    if (!dump.isEmpty())
-        dumpFilters(pm, dump);
+    if (!dump.isEmpty()) dumpFilters(pm, dump);
 
     MeshDocument md;
     for (const QString& in : inputs) {
         try {
             const std::list<MeshModel*> loaded = meshlab::loadMeshWithStandardParameters(in, md);
             for (MeshModel* m : loaded)
-                std::fprintf(stdout, "Mesh %s loaded has %i vn %i fn\n", qUtf8Printable(in), m->cm.vn,
-                             m->cm.fn);
+                std::fprintf(stdout, "Mesh %s loaded has %i vn %i fn\n", qUtf8Printable(in), m->cm.vn, m->cm.fn);
         } catch (const MLException& e) {
             die(QString("It was not possible to import mesh %1: %2").arg(in, e.what()));
         }
     }
-    if (!script.isEmpty())
-        runScript(pm, md, script);
-    for (const Output& out : outputs)
-        save(pm, md, out);
+    if (!script.isEmpty()) runScript(pm, md, script);
+    for (const Output& out : outputs) save(pm, md, out);
     std::fflush(stdout);
     return 0;
 }
