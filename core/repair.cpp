@@ -144,45 +144,38 @@ std::string percent(double fraction)
     return s.str();
 }
 
-}  // namespace
+//! The input scaled by a power of two (exact), so that squared lengths, cross products and areas
+//! neither overflow nor underflow at any model size (1e300, 1e-300); the output takes the input's
+//! own coordinates, and lengths and areas are reported in input units (toInputLength).
+struct ScaledCopy {
+    std::vector<Vec3> pos;
+    double toInputLength = 1;
+};
 
-TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairReport& report)
+ScaledCopy scaledCopy(const TriMesh& input, const std::vector<char>& referenced)
 {
-    report = RepairReport{};
     const int n = input.vertexCount();
-    report.vertexMap.resize(n);
-    std::iota(report.vertexMap.begin(), report.vertexMap.end(), 0);
-    std::vector<char> referenced(n, 0);
-    for (const Face& t : input.faces)
-        for (int c : t) {
-            if (c < 0 || c >= n || !input.vertices[c].allFinite()) {
-                report.skipped = true;  // the strict check says what and where
-                return input;
-            }
-            referenced[c] = 1;
-        }
-    if (input.faces.empty()) {
-        report.skipped = true;
-        return input;
-    }
-    report.removedUnreferencedVertices = n - static_cast<int>(std::count(referenced.begin(), referenced.end(), 1));
-    // Computed on a copy scaled by a power of two (exact), so that squared lengths, cross
-    // products and areas neither overflow nor underflow at any model size (1e300, 1e-300); the
-    // output takes the input's own coordinates, and lengths and areas are reported in input units.
     int exponent = 0;
-    {
-        double largest = 0;
-        for (int v = 0; v < n; ++v)
-            if (referenced[v]) largest = std::max(largest, input.vertices[v].cwiseAbs().maxCoeff());
-        if (largest > 0) std::frexp(largest, &exponent);
-    }
-    std::vector<Vec3> pos = input.vertices;
-    for (Vec3& p : pos)
+    double largest = 0;
+    for (int v = 0; v < n; ++v)
+        if (referenced[v]) largest = std::max(largest, input.vertices[v].cwiseAbs().maxCoeff());
+    if (largest > 0) std::frexp(largest, &exponent);
+    ScaledCopy copy;
+    copy.pos = input.vertices;
+    for (Vec3& p : copy.pos)
         for (int k = 0; k < 3; ++k) p[k] = std::ldexp(p[k], -exponent);
-    const double toInputLength = std::ldexp(1.0, exponent);
+    copy.toInputLength = std::ldexp(1.0, exponent);
+    return copy;
+}
 
-    // 1. Vertices at the same coordinates (-0 = +0), then border vertices within the tolerance.
-    std::vector<int> rep = exactDuplicateRepresentatives(pos, referenced, report.mergedDuplicateVertices);
+//! Step 1: vertices at the same coordinates (-0 = +0) merged, then border vertices within the
+//! weld tolerance welded and T-junctions split. Returns the faces on the representatives; `rep`
+//! maps every input vertex to its representative.
+std::vector<Face> weldVertices(const TriMesh& input, std::vector<Vec3>& pos, const std::vector<char>& referenced,
+                               double toInputLength, const RepairParams& params, std::vector<int>& rep, RepairReport& report)
+{
+    const int n = input.vertexCount();
+    rep = exactDuplicateRepresentatives(pos, referenced, report.mergedDuplicateVertices);
     std::vector<Face> faces;
     faces.reserve(input.faces.size());
     for (const Face& t : input.faces) faces.push_back({rep[t[0]], rep[t[1]], rep[t[2]]});
@@ -214,7 +207,12 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         report.tJunctions = insertTJunctions(pos, faces, tol, meanEdge);
     }
 
-    // 2. Degenerate, duplicate and opposite faces.
+    return faces;
+}
+
+//! Step 2: degenerate, duplicate and opposite faces removed.
+void removeBadFaces(const std::vector<Vec3>& pos, std::vector<Face>& faces, RepairReport& report)
+{
     {
         std::vector<Face> kept;
         kept.reserve(faces.size());
@@ -242,20 +240,16 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         }
         faces.swap(kept);
     }
-    if (faces.empty()) {
-        report.skipped = true;  // every face degenerate: the strict check's message
-        return input;
-    }
+}
+
+//! Step 3: which face continues which across each edge (partner[h]: the half-edge glued to h);
+//! the faces around a non-manifold edge are paired by angle into manifold sheets.
+std::vector<int> glueEdges(const std::vector<Vec3>& pos, const std::vector<Face>& faces, const EdgeTable& edges,
+                           RepairReport& report)
+{
     const int faceCount = static_cast<int>(faces.size());
     auto origin = [&](int h) { return faces[h / 3][h % 3]; };
-
-    // 3. Which face continues which across each edge: partner[h] is the half-edge glued to h.
-    const EdgeTable edges = buildEdgeTable(faces, n);
     std::vector<int> partner = glueTwoSidedEdges(edges, faceCount);
-    auto cut = [&](int h) {
-        if (partner[h] >= 0) partner[partner[h]] = -1;
-        partner[h] = -1;
-    };
     for (int e = 0; e < edges.edgeCount(); ++e) {
         const int k = edges.faceCount(e);
         if (k <= 2) continue;
@@ -280,18 +274,25 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         }
     }
 
-    // 4. Orientation: a breadth-first walk per component; a glued edge whose faces disagree
-    // with the orientation reached so far is cut (the seam of a Moebius-like piece).
-    report.nonOrientableComponents = orientByWalk(faces, partner, [&](int h) {
-                                         cut(h);
-                                         ++report.seamEdges;
-                                     }).nonOrientable;
+    return partner;
+}
 
+//! Unglues half-edge h from its partner.
+void cutEdge(std::vector<int>& partner, int h)
+{
+    if (partner[h] >= 0) partner[partner[h]] = -1;
+    partner[h] = -1;
+}
+
+//! Step 5: one vertex per fan of corners glued across edges (cornerVertex; vertex n + i is a
+//! copy of copySource[i]).
+void splitVertexFans(const std::vector<Face>& faces, const EdgeTable& edges, int n, std::vector<int>& partner,
+                     std::vector<int>& cornerVertex, std::vector<int>& copySource, RepairReport& report)
+{
+    auto cut = [&](int h) { cutEdge(partner, h); };
     // 5. One vertex per fan of corners glued across edges. A face cut from faces that still
     // share both ends of the edge (a cut that splits neither end) is detached at one corner:
     // its other edge at that corner is cut too.
-    std::vector<int> cornerVertex(3 * size_t(faceCount));
-    std::vector<int> copySource;  // vertex n + i is a copy of copySource[i]
     for (int round = 0;; ++round) {
         splitIntoFans(faces, partner, n, {}, cornerVertex, copySource);
         bool detached = false;
@@ -332,8 +333,14 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         report.splitVertices = static_cast<int>(std::count(split.begin(), split.end(), 1));
         report.addedVertexCopies = static_cast<int>(copySource.size());
     }
+}
 
-    // 6. Components (through glued edges) too small for the vertex budget.
+//! Step 6: the faces kept once components (through glued edges) too small for the vertex budget
+//! are dropped.
+std::vector<char> keptFaces(const std::vector<Vec3>& pos, const std::vector<Face>& faces, const std::vector<int>& partner,
+                            double toInputLength, const RepairParams& params, RepairReport& report)
+{
+    const int faceCount = static_cast<int>(faces.size());
     std::vector<char> keepFace(faceCount, 1);
     {
         DisjointSets sets(faceCount);
@@ -380,22 +387,12 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         }
     }
 
-    // 7. The repaired mesh: referenced vertices in input order, then the copies.
-    const int working = n + static_cast<int>(copySource.size());
-    std::vector<int> index(working, -1);
-    for (int c = 0; c < 3 * faceCount; ++c)
-        if (keepFace[c / 3]) index[cornerVertex[c]] = 0;
-    TriMesh out;
-    for (int v = 0; v < working; ++v)
-        if (index[v] == 0) {
-            index[v] = out.vertexCount();
-            out.vertices.push_back(input.vertices[v < n ? v : copySource[v - n]]);
-        }
-    for (int f = 0; f < faceCount; ++f)
-        if (keepFace[f])
-            out.faces.push_back({index[cornerVertex[3 * f]], index[cornerVertex[3 * f + 1]], index[cornerVertex[3 * f + 2]]});
-    for (int v = 0; v < n; ++v) report.vertexMap[v] = referenced[v] ? index[rep[v]] : -1;
+    return keepFace;
+}
 
+//! What the repair did, as the log's information (changes nothing a user sees) and notes.
+void describeRepair(const RepairParams& params, RepairReport& report)
+{
     auto note = [&](int count, const std::string& text) {
         if (count > 0) report.notes.push_back("repair: " + std::to_string(count) + " " + text);
     };
@@ -430,6 +427,71 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
         note(report.keptSmallComponents, "connected components get fewer than " +
                                              std::to_string(int(params.minComponentSamples)) + " samples but hold over " +
                                              percent(params.keepAreaFraction) + " of the area each: kept (use more vertices)");
+}
+
+}  // namespace
+
+TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairReport& report)
+{
+    report = RepairReport{};
+    const int n = input.vertexCount();
+    report.vertexMap.resize(n);
+    std::iota(report.vertexMap.begin(), report.vertexMap.end(), 0);
+    std::vector<char> referenced(n, 0);
+    for (const Face& t : input.faces)
+        for (int c : t) {
+            if (c < 0 || c >= n || !input.vertices[c].allFinite()) {
+                report.skipped = true;  // the strict check says what and where
+                return input;
+            }
+            referenced[c] = 1;
+        }
+    if (input.faces.empty()) {
+        report.skipped = true;
+        return input;
+    }
+    report.removedUnreferencedVertices = n - static_cast<int>(std::count(referenced.begin(), referenced.end(), 1));
+    ScaledCopy scaled = scaledCopy(input, referenced);  // 1.-2. on the scaled copy
+    std::vector<Vec3>& pos = scaled.pos;
+    std::vector<int> rep;
+    std::vector<Face> faces = weldVertices(input, pos, referenced, scaled.toInputLength, params, rep, report);
+    removeBadFaces(pos, faces, report);
+    if (faces.empty()) {
+        report.skipped = true;  // every face degenerate: the strict check's message
+        return input;
+    }
+    const int faceCount = static_cast<int>(faces.size());
+    const EdgeTable edges = buildEdgeTable(faces, n);
+    std::vector<int> partner = glueEdges(pos, faces, edges, report);  // 3.
+    // 4. Orientation: a breadth-first walk per component; a glued edge whose faces disagree
+    // with the orientation reached so far is cut (the seam of a Moebius-like piece).
+    report.nonOrientableComponents = orientByWalk(faces, partner, [&](int h) {
+                                         cutEdge(partner, h);
+                                         ++report.seamEdges;
+                                     }).nonOrientable;
+
+    std::vector<int> cornerVertex(3 * size_t(faceCount));
+    std::vector<int> copySource;
+    splitVertexFans(faces, edges, n, partner, cornerVertex, copySource, report);                              // 5.
+    const std::vector<char> keepFace = keptFaces(pos, faces, partner, scaled.toInputLength, params, report);  // 6.
+
+    // 7. The repaired mesh: referenced vertices in input order, then the copies.
+    const int working = n + static_cast<int>(copySource.size());
+    std::vector<int> index(working, -1);
+    for (int c = 0; c < 3 * faceCount; ++c)
+        if (keepFace[c / 3]) index[cornerVertex[c]] = 0;
+    TriMesh out;
+    for (int v = 0; v < working; ++v)
+        if (index[v] == 0) {
+            index[v] = out.vertexCount();
+            out.vertices.push_back(input.vertices[v < n ? v : copySource[v - n]]);
+        }
+    for (int f = 0; f < faceCount; ++f)
+        if (keepFace[f])
+            out.faces.push_back({index[cornerVertex[3 * f]], index[cornerVertex[3 * f + 1]], index[cornerVertex[3 * f + 2]]});
+    for (int v = 0; v < n; ++v) report.vertexMap[v] = referenced[v] ? index[rep[v]] : -1;
+
+    describeRepair(params, report);
     return out;
 }
 
