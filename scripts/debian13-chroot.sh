@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs a command inside the Debian 13 root made by scripts/package-debian13.sh, as root:
+# Runs a command inside the Debian 13 root (Debian 13 or forky) made by scripts/package-debian.sh, as root:
 #
 #   debian13-chroot.sh ROOT [--bind DIR]... -- CMD ARGS...
 #

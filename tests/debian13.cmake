@@ -1,49 +1,68 @@
-# The Debian 13 (trixie) package, built and tested inside a Debian 13 root (label: debian13).
-# debian13_package runs scripts/package-debian13.sh, which makes the root with debootstrap in
-# the build directory (as root; about 2 minutes), installs MeshLab 2022.02 and the build
+# The packages for newer Debians, each built and tested inside a root of its release:
+#   debian13_* (label debian13): Debian 13 trixie, MeshLab 2022.02;
+#   forky_*    (label forky):    Debian testing forky (made as sid is), MeshLab 2025.07.
+# <tag>_package runs scripts/package-debian.sh RELEASE, which makes the root with debootstrap in
+# the build directory (as root; about 2 minutes), installs the release's MeshLab and the build
 # dependencies in it (about 4), and builds the core, the plugin and the .deb there; the other
 # tests then install that .deb with apt-get, check its symbols, run the three filters through
-# MeshLab 2022.02's own plugin manager (fcvt-meshlab-host, tests/debian13/meshlab_host.cpp) with
-# the same scripts and checks as the meshlabserver tests, and start the GUI under Xvfb. Each
-# is skipped (status 77) when not run as root or when debootstrap fails. Nothing is cached
-# outside the build directory; the root is made afresh each run (FCVT_DEBIAN13_FRESH=0 in the
-# environment reuses a complete one, for development).
+# that MeshLab's own plugin manager (fcvt-meshlab-host, tests/debian13/meshlab_host.cpp; its
+# version and precision checks included) with the same scripts and checks as the meshlabserver
+# tests, start the GUI under Xvfb and open the remeshing dialog. Each is skipped (status 77) when
+# not run as root or when debootstrap fails. Nothing is cached outside the build directory; the
+# roots are made afresh each run (FCVT_DEBIAN13_FRESH=0 in the environment reuses complete ones,
+# for development).
 option(FCVT_TEST_DEBIAN13 "Test the Debian 13 package in a Debian 13 root (needs root and the archive)" ON)
-if(NOT FCVT_TEST_DEBIAN13)
-  return()
-endif()
+option(FCVT_TEST_FORKY "Test the forky (MeshLab 2025.07) package in a forky root (needs root and the archive)" ON)
 set(_d13 "${CMAKE_CURRENT_SOURCE_DIR}/debian13")
 set(_d13_args "${PROJECT_BINARY_DIR}" "${PROJECT_SOURCE_DIR}")
-
-add_test(NAME debian13_package COMMAND bash "${_d13}/package.sh" ${_d13_args})
-set_tests_properties(debian13_package PROPERTIES LABELS "debian13;package" TIMEOUT 2700
-  SKIP_RETURN_CODE 77 FIXTURES_SETUP debian13_built RESOURCE_LOCK debian13_root)
-add_test(NAME debian13_deb_installs COMMAND bash "${_d13}/deb_installs.sh" ${_d13_args})
-set_tests_properties(debian13_deb_installs PROPERTIES LABELS "debian13;package" TIMEOUT 600
-  SKIP_RETURN_CODE 77 FIXTURES_REQUIRED debian13_built FIXTURES_SETUP debian13_installed
-  RESOURCE_LOCK debian13_root)
-add_test(NAME debian13_plugin_symbols COMMAND bash "${_d13}/symbols.sh" ${_d13_args})
-add_test(NAME debian13_gui COMMAND bash "${_d13}/gui.sh" ${_d13_args} "${CMAKE_CURRENT_BINARY_DIR}/debian13/gui")
-add_test(NAME debian13_gui_dialog COMMAND bash "${_d13}/gui_dialog.sh" ${_d13_args} "${CMAKE_CURRENT_BINARY_DIR}/debian13/gui_dialog")
-set(_d13_tests debian13_plugin_symbols debian13_gui debian13_gui_dialog)
-
-# The meshlabserver tests of tests/meshlab/, against MeshLab 2022.02 (tests/meshlab/common.sh,
-# FCVT_MESHLAB_HOST). compare_isotropic is left out: it drives MeshLab's built-in filters, and
-# MeshLab 2022.02 has no "Change the current layer" filter.
 set(_d13_cli "")
 if(TARGET fcvt)
   set(_d13_cli "$<TARGET_FILE:fcvt>")
 endif()
-foreach(_t plugin_loads remesh_torus invalid_parameter field_torus missing_rosy field_then_remesh
-           colour_transfer quality_report invalid_new_parameters filter_equals_cli log_order)
-  set(_extra "")
-  if(_t STREQUAL "remesh_torus" OR _t STREQUAL "filter_equals_cli" OR _t STREQUAL "log_order")
-    set(_extra ${_d13_cli})
-  endif()
-  add_test(NAME debian13_meshlab_${_t}
-    COMMAND bash "${_d13}/meshlab_test.sh" ${_d13_args} "${CMAKE_CURRENT_SOURCE_DIR}/meshlab/${_t}.sh"
-            "${CMAKE_CURRENT_BINARY_DIR}/debian13/${_t}" ${_extra})
-  list(APPEND _d13_tests debian13_meshlab_${_t})
-endforeach()
-set_tests_properties(${_d13_tests} PROPERTIES LABELS debian13 TIMEOUT 900 SKIP_RETURN_CODE 77
-  FIXTURES_REQUIRED "debian13_built;debian13_installed")
+
+# fcvt_debian_release_tests(TAG RELEASE): the tests of one release, named TAG_*.
+function(fcvt_debian_release_tests tag release)
+  set(_env "FCVT_DEBIAN_RELEASE=${release}")
+  set(_work "${CMAKE_CURRENT_BINARY_DIR}/${tag}")
+  add_test(NAME ${tag}_package COMMAND bash "${_d13}/package.sh" ${_d13_args})
+  set_tests_properties(${tag}_package PROPERTIES LABELS "${tag};package" TIMEOUT 2700
+    SKIP_RETURN_CODE 77 FIXTURES_SETUP ${tag}_built RESOURCE_LOCK ${tag}_root ENVIRONMENT "${_env}")
+  add_test(NAME ${tag}_deb_installs COMMAND bash "${_d13}/deb_installs.sh" ${_d13_args})
+  set_tests_properties(${tag}_deb_installs PROPERTIES LABELS "${tag};package" TIMEOUT 600
+    SKIP_RETURN_CODE 77 FIXTURES_REQUIRED ${tag}_built FIXTURES_SETUP ${tag}_installed
+    RESOURCE_LOCK ${tag}_root ENVIRONMENT "${_env}")
+  add_test(NAME ${tag}_plugin_symbols COMMAND bash "${_d13}/symbols.sh" ${_d13_args})
+  add_test(NAME ${tag}_gui COMMAND bash "${_d13}/gui.sh" ${_d13_args} "${_work}/gui")
+  add_test(NAME ${tag}_gui_dialog COMMAND bash "${_d13}/gui_dialog.sh" ${_d13_args} "${_work}/gui_dialog")
+  set(_tests ${tag}_plugin_symbols ${tag}_gui ${tag}_gui_dialog)
+  # The meshlabserver tests of tests/meshlab/, against the release's MeshLab (tests/meshlab/common.sh,
+  # FCVT_MESHLAB_HOST). compare_isotropic is left out: it drives MeshLab's built-in filters, and
+  # MeshLab 2022.02 and later have no "Change the current layer" filter.
+  foreach(_t plugin_loads remesh_torus invalid_parameter field_torus missing_rosy field_then_remesh
+             colour_transfer quality_report invalid_new_parameters filter_equals_cli log_order)
+    # filter_equals_cli compares the plugin with this machine's CLI, bit for bit in effect: the
+    # forky plugin is built by GCC 16 against glibc 2.43's libm, and the last digits of its
+    # floating point differ, which the valence stage amplifies on small scans (V6 63.8 against
+    # 64.2 % on many_small_holes). It runs for 2020.09 and 2022.02 (GCC 12 and 14: the same bits).
+    if(tag STREQUAL "forky" AND _t STREQUAL "filter_equals_cli")
+      continue()
+    endif()
+    set(_extra "")
+    if(_t STREQUAL "remesh_torus" OR _t STREQUAL "filter_equals_cli" OR _t STREQUAL "log_order")
+      set(_extra ${_d13_cli})
+    endif()
+    add_test(NAME ${tag}_meshlab_${_t}
+      COMMAND bash "${_d13}/meshlab_test.sh" ${_d13_args} "${CMAKE_CURRENT_SOURCE_DIR}/meshlab/${_t}.sh"
+              "${_work}/${_t}" ${_extra})
+    list(APPEND _tests ${tag}_meshlab_${_t})
+  endforeach()
+  set_tests_properties(${_tests} PROPERTIES LABELS ${tag} TIMEOUT 900 SKIP_RETURN_CODE 77
+    FIXTURES_REQUIRED "${tag}_built;${tag}_installed" ENVIRONMENT "${_env}")
+endfunction()
+
+if(FCVT_TEST_DEBIAN13)
+  fcvt_debian_release_tests(debian13 trixie)
+endif()
+if(FCVT_TEST_FORKY)
+  fcvt_debian_release_tests(forky forky)
+endif()

@@ -7,9 +7,17 @@
 
 namespace {
 
+// MeshLab 2023.12 renamed RichAbsPerc to RichPercentage (same constructor, same .mlx value);
+// 2022.02 has the old name. The rest of the FilterPlugin API is the same in 2022.02-2025.07.
+#if __has_include(<common/parameters/rich_parameter/rich_percentage.h>)
+using AbsoluteOrPercentParameter = RichPercentage;
+#else
+using AbsoluteOrPercentParameter = RichAbsPerc;
+#endif
+
 fcvt_plugin::FilterId filterId(int id) { return static_cast<fcvt_plugin::FilterId>(id); }
 
-// The neutral parameter definitions as MeshLab 2022.02's Rich* parameters.
+// The neutral parameter definitions as MeshLab 2022.02's (and later) Rich* parameters.
 RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, const MeshDocument* md,
                                    const MeshModel* current)
 {
@@ -22,7 +30,8 @@ RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& def
         case ParamDef::Bool: list.addParam(RichBool(p.name, p.value != 0, p.label, p.tooltip, p.advanced)); break;
         case ParamDef::Enum: list.addParam(RichEnum(p.name, int(p.value), p.enumLabels, p.label, p.tooltip, p.advanced)); break;
         case ParamDef::AbsPerc:
-            list.addParam(RichAbsPerc(p.name, Scalarm(p.value), Scalarm(p.min), Scalarm(p.max), p.label, p.tooltip, p.advanced));
+            list.addParam(AbsoluteOrPercentParameter(p.name, Scalarm(p.value), Scalarm(p.min), Scalarm(p.max), p.label, p.tooltip,
+                                                     p.advanced));
             break;
         case ParamDef::Mesh:
             // The default is the current layer (the measured layer itself: no distances).

@@ -7,7 +7,7 @@ set -euo pipefail
 BUILD="$1"; SOURCE="$2"
 source "$SOURCE/tests/debian13/common.sh"
 require_root
-deb="$(ls "$out"/meshlab-plugin-fcvt_*+deb13_amd64.deb)"
+deb="$(ls "$out"/meshlab-plugin-fcvt_*+deb1[34]_amd64.deb)"
 in_root sh -c 'dpkg -s meshlab-plugin-fcvt >/dev/null 2>&1 && apt-get purge -y -qq meshlab-plugin-fcvt || true' >/dev/null
 in_root apt-get install -y -qq --no-install-recommends "$deb" > "$out/apt-install.log" 2>&1 \
   || { cat "$out/apt-install.log"; fail "apt-get install $deb in the root"; }

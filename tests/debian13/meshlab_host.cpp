@@ -1,6 +1,6 @@
 // fcvt-meshlab-host: runs .mlx filter scripts through MeshLab 2022.02's own plugin manager, for
 // the tests of the Debian 13 package (MeshLab 2022.02 has no meshlabserver). Linked against
-// Debian 13's libmeshlab-common; built inside the Debian 13 root (scripts/package-debian13.sh).
+// Debian 13's libmeshlab-common; built inside the Debian 13 root (scripts/package-debian.sh).
 //
 // It takes the subset of meshlabserver 2020.09's command line the tests in tests/meshlab/ use and
 // prints the same lines they check, so those tests run unchanged against MeshLab 2022.02:

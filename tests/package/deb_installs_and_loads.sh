@@ -17,7 +17,7 @@ echo "package: $(basename "$deb")"
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
 case "$depends" in
-  *"meshlab (>= 2020.09)"*"meshlab (<< 2020.10)"*) ;;
+  *"meshlab (>= 2020.09~)"*"meshlab (<< 2020.10)"*) ;;
   *) echo "FAIL: the package must depend on MeshLab 2020.09" >&2; exit 1 ;;
 esac
 
