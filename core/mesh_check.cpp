@@ -37,6 +37,105 @@ std::string point(const Vec3& p)
 
 std::string vertexAt(const TriMesh& input, int v) { return std::to_string(v) + " " + point(input.vertices[v]); }
 
+//! The faces on the representatives `rep`, without degenerate ones (repeated corner, zero area;
+//! thin needles of non-zero area are fine for the RVD and kept); faceOrigin: clean face -> input
+//! face, for messages.
+std::vector<Face> nonDegenerateFaces(const TriMesh& input, const std::vector<int>& rep, std::vector<int>& faceOrigin,
+                                     InputReport& report)
+{
+    std::vector<Face> faces;
+    bool allOnLines = true;
+    faces.reserve(input.faces.size());
+    faceOrigin.reserve(input.faces.size());
+    for (int f = 0; f < input.faceCount(); ++f) {
+        const Face t{rep[input.faces[f][0]], rep[input.faces[f][1]], rep[input.faces[f][2]]};
+        int exponent = 0;
+        const Vec3 normal = scaledCross(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]], exponent);
+        // Exact zero test (not squaredNorm() == 0, which underflows on tiny but valid faces), on
+        // the scaled edges: a face of a 1e-170 model is not degenerate.
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || (normal.array() == 0.0).all()) {
+            ++report.removedDegenerateFaces;
+            continue;
+        }
+        allOnLines = allOnLines && cornersOnOneLine(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
+        faces.push_back(t);
+        faceOrigin.push_back(f);
+    }
+    // Corners on one line up to rounding leave a tiny area that is not exactly zero: a surface
+    // made only of such faces has nothing to remesh either.
+    if (!faces.empty() && allOnLines)
+        throw InvalidInputError("every face of the mesh is degenerate (its corners lie on one line, up to rounding)");
+    return faces;
+}
+
+//! Removes faces with the corner set of an earlier face (exact duplicates).
+void removeDuplicateFaces(std::vector<Face>& faces, std::vector<int>& faceOrigin, InputReport& report)
+{
+    std::vector<std::pair<std::array<int, 3>, int>> keys;
+    keys.reserve(faces.size());
+    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+        std::array<int, 3> k = faces[f];
+        std::sort(k.begin(), k.end());
+        keys.push_back({k, f});
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<char> keep(faces.size(), 1);
+    for (size_t r = 1; r < keys.size(); ++r)
+        if (keys[r].first == keys[r - 1].first) {
+            keep[keys[r].second] = 0;
+            ++report.removedDuplicateFaces;
+        }
+    std::vector<Face> kept;
+    std::vector<int> keptOrigin;
+    kept.reserve(faces.size());
+    keptOrigin.reserve(faces.size());
+    for (size_t f = 0; f < faces.size(); ++f)
+        if (keep[f]) kept.push_back(faces[f]), keptOrigin.push_back(faceOrigin[f]);
+    faces.swap(kept);
+    faceOrigin.swap(keptOrigin);
+}
+
+//! Refuses a mesh with an edge of more than two faces: it cannot be remeshed as one surface.
+void refuseNonManifoldEdges(const TriMesh& input, const EdgeTable& edges)
+{
+    int nonManifold = 0, first = -1;
+    for (int e = 0; e < edges.edgeCount(); ++e)
+        if (edges.isNonManifold(e) && nonManifold++ == 0) first = e;
+    if (nonManifold > 0)
+        throw InvalidInputError(std::to_string(nonManifold) +
+                                " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
+                                vertexAt(input, edges.ends[first][0]) + " and " + vertexAt(input, edges.ends[first][1]));
+}
+
+//! The information and notes of what the preparation changed.
+void describePreparation(InputReport& report)
+{
+    if (report.mergedDuplicateVertices > 0)
+        report.information.push_back("merged " + std::to_string(report.mergedDuplicateVertices) +
+                                     " duplicate vertices (same coordinates)");
+    if (report.removedUnreferencedVertices > 0)
+        report.information.push_back("removed " + std::to_string(report.removedUnreferencedVertices) + " unreferenced vertices");
+    if (report.removedDegenerateFaces > 0)
+        report.notes.push_back("removed " + std::to_string(report.removedDegenerateFaces) + " degenerate (zero-area) faces");
+    if (report.removedDuplicateFaces > 0)
+        report.notes.push_back("removed " + std::to_string(report.removedDuplicateFaces) + " duplicate faces");
+    if (report.flippedFaces > 0)
+        report.notes.push_back("flipped " + std::to_string(report.flippedFaces) +
+                               " faces to orient each connected component consistently (with its first face)");
+    if (report.splitNonManifoldVertices > 0)
+        report.notes.push_back("split " + std::to_string(report.splitNonManifoldVertices) +
+                               " non-manifold vertices (faces forming several fans) into one vertex per fan (" +
+                               std::to_string(report.addedVertexCopies) + " vertices added)");
+    if (report.components > 1) {
+        const double total = std::accumulate(report.componentAreas.begin(), report.componentAreas.end(), 0.0);
+        const double smallest = *std::min_element(report.componentAreas.begin(), report.componentAreas.end());
+        std::ostringstream s;
+        s << "the mesh has " << report.components << " connected components (kept; the smallest has " << std::setprecision(3)
+          << (total > 0 ? 100.0 * smallest / total : 0.0) << " % of the area)";
+        report.information.push_back(s.str());
+    }
+}
+
 }  // namespace
 
 TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
@@ -66,71 +165,18 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     std::iota(rep.begin(), rep.end(), 0);
     if (!repaired) rep = exactDuplicateRepresentatives(input.vertices, referenced, report.mergedDuplicateVertices);
 
-    // 2. Faces: drop degenerate ones (repeated corner, zero area; thin needles of non-zero area
-    // are fine for the RVD and kept) and exact duplicates (same corner set; not searched for in
-    // a repaired mesh: the repair removed every face whose corner set an earlier face has, and
-    // its vertex splits give the faces of one fan the same copy).
-    std::vector<Face> faces;
-    std::vector<int> faceOrigin;  // clean face -> input face, for messages
-    bool allOnLines = true;
-    faces.reserve(input.faces.size());
-    faceOrigin.reserve(input.faces.size());
-    for (int f = 0; f < input.faceCount(); ++f) {
-        const Face t{rep[input.faces[f][0]], rep[input.faces[f][1]], rep[input.faces[f][2]]};
-        int exponent = 0;
-        const Vec3 normal = scaledCross(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]], exponent);
-        // Exact zero test (not squaredNorm() == 0, which underflows on tiny but valid faces), on
-        // the scaled edges: a face of a 1e-170 model is not degenerate.
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || (normal.array() == 0.0).all()) {
-            ++report.removedDegenerateFaces;
-            continue;
-        }
-        allOnLines = allOnLines && cornersOnOneLine(input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]);
-        faces.push_back(t);
-        faceOrigin.push_back(f);
-    }
-    // Corners on one line up to rounding leave a tiny area that is not exactly zero: a surface
-    // made only of such faces has nothing to remesh either.
-    if (!faces.empty() && allOnLines)
-        throw InvalidInputError("every face of the mesh is degenerate (its corners lie on one line, up to rounding)");
-    if (!repaired) {
-        std::vector<std::pair<std::array<int, 3>, int>> keys;
-        keys.reserve(faces.size());
-        for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
-            std::array<int, 3> k = faces[f];
-            std::sort(k.begin(), k.end());
-            keys.push_back({k, f});
-        }
-        std::sort(keys.begin(), keys.end());
-        std::vector<char> keep(faces.size(), 1);
-        for (size_t r = 1; r < keys.size(); ++r)
-            if (keys[r].first == keys[r - 1].first) {
-                keep[keys[r].second] = 0;
-                ++report.removedDuplicateFaces;
-            }
-        std::vector<Face> kept;
-        std::vector<int> keptOrigin;
-        kept.reserve(faces.size());
-        keptOrigin.reserve(faces.size());
-        for (size_t f = 0; f < faces.size(); ++f)
-            if (keep[f]) kept.push_back(faces[f]), keptOrigin.push_back(faceOrigin[f]);
-        faces.swap(kept);
-        faceOrigin.swap(keptOrigin);
-    }
+    // 2. Degenerate faces, then exact duplicates (not searched for in a repaired mesh: the repair
+    // removed every face whose corner set an earlier face has, and its vertex splits give the
+    // faces of one fan the same copy).
+    std::vector<int> faceOrigin;
+    std::vector<Face> faces = nonDegenerateFaces(input, rep, faceOrigin, report);
+    if (!repaired) removeDuplicateFaces(faces, faceOrigin, report);
     if (faces.empty()) throw InvalidInputError("every face of the mesh is degenerate (zero area)");
     const int faceCount = static_cast<int>(faces.size());
 
-    // 3. Non-manifold edges: more than two faces on one edge cannot be remeshed as one surface.
+    // 3. Non-manifold edges.
     const EdgeTable edges = buildEdgeTable(faces, n);
-    {
-        int nonManifold = 0, first = -1;
-        for (int e = 0; e < edges.edgeCount(); ++e)
-            if (edges.isNonManifold(e) && nonManifold++ == 0) first = e;
-        if (nonManifold > 0)
-            throw InvalidInputError(std::to_string(nonManifold) +
-                                    " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
-                                    vertexAt(input, edges.ends[first][0]) + " and " + vertexAt(input, edges.ends[first][1]));
-    }
+    refuseNonManifoldEdges(input, edges);
 
     // 4. Orientation: per connected component, a breadth-first walk from its first face flips
     // every face that disagrees with the face it was reached from. A face reached again with
@@ -192,30 +238,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     clean.faces.reserve(faces.size());
     for (const Face& t : faces) clean.faces.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
 
-    if (report.mergedDuplicateVertices > 0)
-        report.information.push_back("merged " + std::to_string(report.mergedDuplicateVertices) +
-                                     " duplicate vertices (same coordinates)");
-    if (report.removedUnreferencedVertices > 0)
-        report.information.push_back("removed " + std::to_string(report.removedUnreferencedVertices) + " unreferenced vertices");
-    if (report.removedDegenerateFaces > 0)
-        report.notes.push_back("removed " + std::to_string(report.removedDegenerateFaces) + " degenerate (zero-area) faces");
-    if (report.removedDuplicateFaces > 0)
-        report.notes.push_back("removed " + std::to_string(report.removedDuplicateFaces) + " duplicate faces");
-    if (report.flippedFaces > 0)
-        report.notes.push_back("flipped " + std::to_string(report.flippedFaces) +
-                               " faces to orient each connected component consistently (with its first face)");
-    if (report.splitNonManifoldVertices > 0)
-        report.notes.push_back("split " + std::to_string(report.splitNonManifoldVertices) +
-                               " non-manifold vertices (faces forming several fans) into one vertex per fan (" +
-                               std::to_string(report.addedVertexCopies) + " vertices added)");
-    if (report.components > 1) {
-        const double total = std::accumulate(report.componentAreas.begin(), report.componentAreas.end(), 0.0);
-        const double smallest = *std::min_element(report.componentAreas.begin(), report.componentAreas.end());
-        std::ostringstream s;
-        s << "the mesh has " << report.components << " connected components (kept; the smallest has " << std::setprecision(3)
-          << (total > 0 ? 100.0 * smallest / total : 0.0) << " % of the area)";
-        report.information.push_back(s.str());
-    }
+    describePreparation(report);
     return clean;
 }
 
