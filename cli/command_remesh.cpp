@@ -146,6 +146,55 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"optimisation_faces_per_sample", p.optimisationFacesPerSample}};
 }
 
+//! What the --report JSON takes besides the parameters and the core's result.
+struct RunFigures {
+    double readSeconds = 0, writeSeconds = 0, totalSeconds = 0;
+    double meanEdge = 0;
+    TopologySummary outputTopology;
+};
+
+//! The --report JSON of one run.
+nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string& outPath, const RemeshParams& params,
+                                    double targetLength, const RemeshResult& result, const RunFigures& figures,
+                                    const std::vector<std::string>& warnings, const std::vector<std::string>& notes)
+{
+    nlohmann::ordered_json times = nlohmann::ordered_json::object();
+    times["read"] = figures.readSeconds;
+    for (const StageTime& stage : result.stageTimes) times[stage.stage] = stage.seconds;
+    times["write"] = figures.writeSeconds;
+    times["total"] = figures.totalSeconds;
+    nlohmann::ordered_json paramsOut = paramsJson(params);
+    if (targetLength > 0) paramsOut["target_length"] = targetLength;
+    nlohmann::ordered_json field = fieldJson(params.fieldSource, result.singularities);
+    // The core computes a field only when it is used (lambda > 0 and FCVT iterations).
+    field["computed"] = !result.outputDirections.empty() || !result.singularities.empty();
+    if (field["computed"]) field["mesh"] = fieldMeshDescription(result);
+    return {{"input_file", inPath},
+            {"output_file", outPath},
+            {"vertices", result.mesh.vertexCount()},
+            {"faces", result.mesh.faceCount()},
+            {"mean_edge_length", figures.meanEdge},
+            {"evaluations", result.evaluations},
+            {"threads_used", result.threads},
+            {"optimisation_faces", result.optimisationFaces},
+            {"time_s", times},
+            {"metrics", metricsJson(result.metrics)},
+            {"input", topologyJson(result.inputTopology)},
+            {"output", topologyJson(figures.outputTopology)},
+            {"repair", repairJson(params.repair, result.repair)},
+            {"params", paramsOut},
+            {"field", field},
+            {"valence", valenceJson(params.valenceOptimization, result.valence)},
+            {"start", result.lattice.passes > 0 ? nlohmann::ordered_json{{"kind", "lattice"},
+                                                                         {"spacing", result.lattice.spacing},
+                                                                         {"passes", result.lattice.passes},
+                                                                         {"samples", result.lattice.samples}}
+                                                : nlohmann::ordered_json{{"kind", "random"}}},
+            {"energy_history", energyHistoryJson(result.energyHistory)},
+            {"warnings", warnings},
+            {"notes", notes}};
+}
+
 }  // namespace
 
 int runRemesh(const std::vector<std::string>& args)
@@ -235,45 +284,10 @@ int runRemesh(const std::vector<std::string>& args)
     const double meanEdge = described ? meanEdgeLength(result.mesh) : 0.0;
     const double totalSeconds = secondsSince(start);
 
-    if (auto reportPath = a.text("report")) {
-        nlohmann::ordered_json times = nlohmann::ordered_json::object();
-        times["read"] = readSeconds;
-        for (const StageTime& stage : result.stageTimes) times[stage.stage] = stage.seconds;
-        times["write"] = writeSeconds;
-        times["total"] = totalSeconds;
-        nlohmann::ordered_json paramsOut = paramsJson(params);
-        if (targetLength > 0) paramsOut["target_length"] = targetLength;
-        nlohmann::ordered_json field = fieldJson(params.fieldSource, result.singularities);
-        // The core computes a field only when it is used (lambda > 0 and FCVT iterations).
-        field["computed"] = !result.outputDirections.empty() || !result.singularities.empty();
-        if (field["computed"]) field["mesh"] = fieldMeshDescription(result);
-        const nlohmann::ordered_json report = {
-            {"input_file", inPath},
-            {"output_file", outPath},
-            {"vertices", result.mesh.vertexCount()},
-            {"faces", result.mesh.faceCount()},
-            {"mean_edge_length", meanEdge},
-            {"evaluations", result.evaluations},
-            {"threads_used", result.threads},
-            {"optimisation_faces", result.optimisationFaces},
-            {"time_s", times},
-            {"metrics", metricsJson(result.metrics)},
-            {"input", topologyJson(result.inputTopology)},
-            {"output", topologyJson(outputTopology)},
-            {"repair", repairJson(params.repair, result.repair)},
-            {"params", paramsOut},
-            {"field", field},
-            {"valence", valenceJson(params.valenceOptimization, result.valence)},
-            {"start", result.lattice.passes > 0 ? nlohmann::ordered_json{{"kind", "lattice"},
-                                                                         {"spacing", result.lattice.spacing},
-                                                                         {"passes", result.lattice.passes},
-                                                                         {"samples", result.lattice.samples}}
-                                                : nlohmann::ordered_json{{"kind", "random"}}},
-            {"energy_history", energyHistoryJson(result.energyHistory)},
-            {"warnings", warnings},
-            {"notes", notes}};
-        writeJsonFile(*reportPath, report);
-    }
+    if (auto reportPath = a.text("report"))
+        writeJsonFile(*reportPath,
+                      remeshReport(inPath, outPath, params, targetLength, result,
+                                   {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes));
 
     for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", escapeControlCharacters(w).c_str());
     if (!quiet) {
