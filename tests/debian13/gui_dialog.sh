@@ -18,18 +18,12 @@ bash "$SOURCE/tests/meshlab/obj2off.sh" "$SOURCE/resources/torus.obj" "$work/tor
 
 cat > "$work/inside.sh" <<'INSIDE'
 set -u
-out="$1"; tag="$2"; mesh="$3"
+out="$1"; tag="$2"; mesh="$3"; source "$4/scripts/meshlab_window.sh"
 mkdir -p "$out/home-$tag" "$out/runtime-$tag"; chmod 700 "$out/runtime-$tag"
 touch "$out/display-started"
 HOME="$out/home-$tag" XDG_RUNTIME_DIR="$out/runtime-$tag" meshlab "$mesh" >"$out/gui-$tag.log" 2>&1 &
 pid=$!
-wid=""
-for _ in $(seq 1 160); do
-  wid="$(xdotool search --name '^MeshLab 20' 2>/dev/null | head -n 1)"
-  [ -n "$wid" ] && break
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.5
-done
+wid="$(wait_meshlab_window "$pid")"
 [ -n "$wid" ] || { echo "no window" >"$out/status-$tag.txt"; exit 0; }
 sleep 4
 xdotool windowfocus "$wid" 2>/dev/null; sleep 1
@@ -50,7 +44,7 @@ INSIDE
 check_screen() {  # WIDTH HEIGHT TAG
   set +e
   timeout 300 bash "$SOURCE/scripts/debian13-chroot.sh" "$root" --bind "$SOURCE" --bind "$work" -- \
-    xvfb-run -a -s "-screen 0 ${1}x${2}x24" bash "$work/inside.sh" "$work" "$3" "$work/torus.off" \
+    xvfb-run -a -s "-screen 0 ${1}x${2}x24" bash "$work/inside.sh" "$work" "$3" "$work/torus.off" "$SOURCE" \
     >"$work/xvfb-$3.log" 2>&1
   set -e
   [ -e "$work/display-started" ] || { cat "$work/xvfb-$3.log"; skip "the virtual display did not start in the root"; }
