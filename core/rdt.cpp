@@ -176,6 +176,37 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
     return result;
 }
 
+// A slit piece: a piece of a cell other than the one nearest to its seed, in a single restricted
+// Delaunay triangle. The seed's cell reaches across a gap of the border narrower than a cell (a
+// ragged border, a slit, a pinched hole) and cuts a sliver off the far side between the border
+// and two cells j, l only; its vertex would sit on the border in line with j and l (a zero-area
+// face). Without it, (j, l) is the border there. Returns the triangles without those of slit pieces.
+std::vector<std::array<int, 3>> withoutSlitPieces(const std::vector<Vec3>& seeds, const RvdResult& rvd, int& slitPieces)
+{
+    const int pieceCount = static_cast<int>(rvd.pieceSeed.size());
+    std::vector<int> faceCount(pieceCount, 0), nearest(seeds.size(), -1);
+    for (const auto& t : rvd.pieceTriangles)
+        for (int p : t) ++faceCount[p];
+    for (int p = 0; p < pieceCount; ++p) {
+        const int s = rvd.pieceSeed[p];
+        const double d = (rvd.piecePoint[p] - seeds[s]).squaredNorm();
+        if (nearest[s] < 0 || d < (rvd.piecePoint[nearest[s]] - seeds[s]).squaredNorm()) nearest[s] = p;
+    }
+    std::vector<std::array<int, 3>> kept;
+    kept.reserve(rvd.pieceTriangles.size());
+    slitPieces = 0;
+    for (const auto& t : rvd.pieceTriangles) {
+        bool slit = false;
+        for (int p : t)
+            if (faceCount[p] == 1 && nearest[rvd.pieceSeed[p]] != p) slit = true;
+        if (slit)
+            ++slitPieces;
+        else
+            kept.push_back(t);
+    }
+    return kept;
+}
+
 void warnAboutDroppedSeeds(RdtResult& result, int seedCount)
 {
     std::vector<char> used(seedCount, 0);
@@ -209,8 +240,10 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const
                                 std::to_string(seeds.size()) + " seeds");
     std::vector<int> pieces(n, 0);
     for (int s : rvd.pieceSeed) ++pieces[s];
+    int slitPieces = 0;
+    const std::vector<std::array<int, 3>> triangles = withoutSlitPieces(seeds, rvd, slitPieces);
     RdtResult result = buildRdt(
-        static_cast<int>(rvd.pieceSeed.size()), rvd.pieceTriangles, [&](int p) { return rvd.pieceSeed[p]; },
+        static_cast<int>(rvd.pieceSeed.size()), triangles, [&](int p) { return rvd.pieceSeed[p]; },
         [&](int p) {
             // One piece: the closest point on the whole surface, as for a plain RDT; several:
             // the closest point on this piece (the surface's may be on another sheet).
@@ -219,6 +252,7 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const
             const ClosestPoint cp = surface.closest(seeds[s], seedFaceHints.empty() ? -1 : seedFaceHints[s]);
             return std::make_pair(cp.point, cp.face);
         });
+    result.slitPieces = slitPieces;
     result.multiPieceSeeds = static_cast<int>(std::count_if(pieces.begin(), pieces.end(), [](int c) { return c > 1; }));
     warnAboutDroppedSeeds(result, n);
     return result;
