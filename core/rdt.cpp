@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "mesh_edges.h"
+#include "triangle_shape.h"
 
 #include <algorithm>
 #include <string>
@@ -177,12 +178,14 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
 }
 
 // A slit piece: a piece of a cell other than the one nearest to its seed, in a single restricted
-// Delaunay triangle. The seed's cell reaches across a gap of the border narrower than a cell (a
+// Delaunay triangle that it would make a sliver (smallest angle under kSlitAngle, the pieces at
+// their points). The seed's cell reaches across a gap of the border narrower than a cell (a
 // ragged border, a slit, a pinched hole) and cuts a sliver off the far side between the border
-// and two cells j, l only; its vertex would sit on the border in line with j and l (a zero-area
-// face). Without it, (j, l) is the border there. Returns the triangles without those of slit pieces.
+// and two cells j, l only; its vertex would sit on the border in line with j's and l's. Without
+// it, (j, l) is the border there. Returns the triangles without those of slit pieces.
 std::vector<std::array<int, 3>> withoutSlitPieces(const std::vector<Vec3>& seeds, const RvdResult& rvd, int& slitPieces)
 {
+    constexpr double kSlitAngle = 30 * 3.14159265358979323846 / 180;
     const int pieceCount = static_cast<int>(rvd.pieceSeed.size());
     std::vector<int> faceCount(pieceCount, 0), nearest(seeds.size(), -1);
     for (const auto& t : rvd.pieceTriangles)
@@ -196,10 +199,10 @@ std::vector<std::array<int, 3>> withoutSlitPieces(const std::vector<Vec3>& seeds
     kept.reserve(rvd.pieceTriangles.size());
     slitPieces = 0;
     for (const auto& t : rvd.pieceTriangles) {
-        bool slit = false;
+        bool secondary = false;
         for (int p : t)
-            if (faceCount[p] == 1 && nearest[rvd.pieceSeed[p]] != p) slit = true;
-        if (slit)
+            if (faceCount[p] == 1 && nearest[rvd.pieceSeed[p]] != p) secondary = true;
+        if (secondary && smallestAngle(rvd.piecePoint[t[0]], rvd.piecePoint[t[1]], rvd.piecePoint[t[2]]) < kSlitAngle)
             ++slitPieces;
         else
             kept.push_back(t);
