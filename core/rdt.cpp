@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "mesh_edges.h"
+#include "triangle_shape.h"
 
 #include <algorithm>
 #include <string>
@@ -176,6 +177,39 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
     return result;
 }
 
+// A slit piece: a piece of a cell other than the one nearest to its seed, in a single restricted
+// Delaunay triangle that it would make a sliver (smallest angle under kSlitAngle, the pieces at
+// their points). The seed's cell reaches across a gap of the border narrower than a cell (a
+// ragged border, a slit, a pinched hole) and cuts a sliver off the far side between the border
+// and two cells j, l only; its vertex would sit on the border in line with j's and l's. Without
+// it, (j, l) is the border there. Returns the triangles without those of slit pieces.
+std::vector<std::array<int, 3>> withoutSlitPieces(const std::vector<Vec3>& seeds, const RvdResult& rvd, int& slitPieces)
+{
+    constexpr double kSlitAngle = 30 * 3.14159265358979323846 / 180;
+    const int pieceCount = static_cast<int>(rvd.pieceSeed.size());
+    std::vector<int> faceCount(pieceCount, 0), nearest(seeds.size(), -1);
+    for (const auto& t : rvd.pieceTriangles)
+        for (int p : t) ++faceCount[p];
+    for (int p = 0; p < pieceCount; ++p) {
+        const int s = rvd.pieceSeed[p];
+        const double d = (rvd.piecePoint[p] - seeds[s]).squaredNorm();
+        if (nearest[s] < 0 || d < (rvd.piecePoint[nearest[s]] - seeds[s]).squaredNorm()) nearest[s] = p;
+    }
+    std::vector<std::array<int, 3>> kept;
+    kept.reserve(rvd.pieceTriangles.size());
+    slitPieces = 0;
+    for (const auto& t : rvd.pieceTriangles) {
+        bool secondary = false;
+        for (int p : t)
+            if (faceCount[p] == 1 && nearest[rvd.pieceSeed[p]] != p) secondary = true;
+        if (secondary && smallestAngle(rvd.piecePoint[t[0]], rvd.piecePoint[t[1]], rvd.piecePoint[t[2]]) < kSlitAngle)
+            ++slitPieces;
+        else
+            kept.push_back(t);
+    }
+    return kept;
+}
+
 void warnAboutDroppedSeeds(RdtResult& result, int seedCount)
 {
     std::vector<char> used(seedCount, 0);
@@ -209,8 +243,10 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const
                                 std::to_string(seeds.size()) + " seeds");
     std::vector<int> pieces(n, 0);
     for (int s : rvd.pieceSeed) ++pieces[s];
+    int slitPieces = 0;
+    const std::vector<std::array<int, 3>> triangles = withoutSlitPieces(seeds, rvd, slitPieces);
     RdtResult result = buildRdt(
-        static_cast<int>(rvd.pieceSeed.size()), rvd.pieceTriangles, [&](int p) { return rvd.pieceSeed[p]; },
+        static_cast<int>(rvd.pieceSeed.size()), triangles, [&](int p) { return rvd.pieceSeed[p]; },
         [&](int p) {
             // One piece: the closest point on the whole surface, as for a plain RDT; several:
             // the closest point on this piece (the surface's may be on another sheet).
@@ -219,6 +255,7 @@ RdtResult extractRdt(const std::vector<Vec3>& seeds, const RvdResult& rvd, const
             const ClosestPoint cp = surface.closest(seeds[s], seedFaceHints.empty() ? -1 : seedFaceHints[s]);
             return std::make_pair(cp.point, cp.face);
         });
+    result.slitPieces = slitPieces;
     result.multiPieceSeeds = static_cast<int>(std::count_if(pieces.begin(), pieces.end(), [](int c) { return c > 1; }));
     warnAboutDroppedSeeds(result, n);
     return result;

@@ -24,6 +24,10 @@ struct RdtResult {
     //! of the input or a thin part crossing their Voronoi edge twice), whose two faces are the same
     //! triangle with both orientations; kept, they would tear the edge of the two cells open.
     int lensPieces = 0;
+    //! Slit pieces dropped: a piece of a cell, not the one nearest to its sample, in one triangle
+    //! only, a sliver (a cell reaching across a gap of the border narrower than a cell); kept, its
+    //! vertex would lie on the border in line with the triangle's two others.
+    int slitPieces = 0;
     std::vector<std::string> warnings;
 };
 

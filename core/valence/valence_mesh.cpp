@@ -10,6 +10,35 @@
 
 namespace fieldcvt::valence {
 
+namespace {
+
+// A Free vertex on the mesh's border is not put on the input's border where that leaves one of
+// its faces under this angle (radians) and sharper than it was.
+constexpr double kBorderPlacementAngle = 20 * kPi / 180;
+
+}  // namespace
+
+Vec3 ValenceMesh::placeOnBorder(int v, const std::vector<Vec3>& at, const std::vector<Segment>& border) const
+{
+    // On a border with detail below the edge length (a ragged scan border, a notch) the closest
+    // border point can lie across a notch, in line with v's border neighbours: v then stays at
+    // its sample's closest point, on the surface next to the border (which its cell reached).
+    const Vec3 closest = closestPointOnSegments(at[v], border);
+    double before = kPi, after = kPi;
+    for (int f : facesOf(v)) {
+        Vec3 corner[3], moved[3];
+        for (int k = 0; k < 3; ++k) {
+            corner[k] = at[face(f)[k]];
+            moved[k] = face(f)[k] == v ? closest : corner[k];
+        }
+        const bool turned =
+            (corner[1] - corner[0]).cross(corner[2] - corner[0]).dot((moved[1] - moved[0]).cross(moved[2] - moved[0])) <= 0;
+        before = std::min(before, smallestAngle(corner[0], corner[1], corner[2]));
+        after = std::min(after, turned ? 0.0 : smallestAngle(moved[0], moved[1], moved[2]));
+    }
+    return after >= kBorderPlacementAngle || after >= before ? closest : at[v];
+}
+
 ValenceMesh::ValenceMesh(const TriMesh& mesh, const std::vector<VertexRole>& roles, const ValenceSurface& surface,
                          int borderWeight, const std::vector<int>& faceHints)
     : EditableMesh<MeshVertex>(mesh.vertices, mesh.faces),
@@ -39,7 +68,7 @@ ValenceMesh::ValenceMesh(const TriMesh& mesh, const std::vector<VertexRole>& rol
         vertex[v].role = roles.empty() ? VertexRole::Free : roles[v];
         if (vertex[v].onBorder && vertex[v].role == VertexRole::Free) {
             // (a sample whose cell reached the border during the FCVT iterations can sit inside it)
-            if (!surface.border.empty()) start[v] = closestPointOnSegments(start[v], surface.border);
+            if (!surface.border.empty()) start[v] = placeOnBorder(v, start, surface.border);
             vertex[v].role = VertexRole::Boundary;
         }
     }

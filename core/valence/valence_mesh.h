@@ -100,6 +100,9 @@ public:
 
 private:
     Vec3 oneRingCentroid(int v) const;
+    //! Where Free vertex v, on the mesh's border, goes (the other vertices at `at`): the closest
+    //! point of the input's `border`, unless that flattens one of its faces.
+    Vec3 placeOnBorder(int v, const std::vector<Vec3>& at, const std::vector<Segment>& border) const;
 
     const ValenceSurface* surface_;
     std::shared_ptr<const SurfaceWalk> walk_;

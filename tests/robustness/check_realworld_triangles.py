@@ -1,0 +1,49 @@
+#!/usr/bin/env python3
+"""Issue 32, item 1, on the real-world meshes of ../shared/realworld: with the default options of
+`fcvt remesh IN OUT.ply --vertices N`, at N = max(500, V/4) and N = max(300, V/8) (V: the input's
+vertices as `fcvt metrics` reads them), no zero-area face, no angle under 15 degrees and at most
+0.5 % of the triangles with an angle under 30 degrees (`fcvt metrics OUT --json`), borders included.
+
+  check_realworld_triangles.py FCVT REALWORLD_DIR WORKDIR NAME...
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
+from fcvt_check import check, finish, metrics_json, read_ply, run_ok  # noqa: E402
+
+
+def zero_area_faces(vertices, faces):
+    count = 0
+    for a, b, c in faces:
+        p, q, r = vertices[a], vertices[b], vertices[c]
+        u = [q[i] - p[i] for i in range(3)]
+        w = [r[i] - p[i] for i in range(3)]
+        cross = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+        count += all(x == 0.0 for x in cross)
+    return count
+
+
+def main():
+    fcvt, directory, work, names = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+    os.makedirs(work, exist_ok=True)
+    for name in names:
+        path = os.path.join(directory, name)
+        table = dict(line.split(None, 1) for line in run_ok([fcvt, "metrics", path]).splitlines() if line.strip())
+        v = int(table["vertices"])
+        for divisor, floor in ((4, 500), (8, 300)):
+            n = max(floor, v // divisor)
+            out = os.path.join(work, f"{name}.{n}.ply")
+            run_ok([fcvt, "remesh", path, out, "--vertices", str(n), "--quiet"])
+            m = metrics_json(fcvt, out)
+            zero = zero_area_faces(*read_ply(out))
+            label = f"{name} at {n} vertices"
+            print(f"{label}: theta_min {m['theta_min']:.2f}, {m['pct_lt30']:.2f} % under 30, {zero} zero-area faces")
+            check(zero == 0, f"{label}: {zero} zero-area faces")
+            check(m["theta_min"] >= 15, f"{label}: smallest angle {m['theta_min']:.2f} < 15 degrees")
+            check(m["pct_lt30"] <= 0.5, f"{label}: {m['pct_lt30']:.2f} % of the triangles under 30 degrees (> 0.5 %)")
+    finish()
+
+
+if __name__ == "__main__":
+    main()
