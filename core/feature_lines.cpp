@@ -12,7 +12,6 @@ namespace fieldcvt {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // A feature line that turns by more than this at a vertex has a corner there.
 constexpr double kCornerTurnDegrees = 25.0;
 

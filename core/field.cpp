@@ -12,8 +12,6 @@ namespace fieldcvt {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 void checkMesh(const TriMesh& mesh)
 {
     if (mesh.vertices.empty() || mesh.faces.empty()) throw InvalidInputError("field: the mesh has no triangles");

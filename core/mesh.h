@@ -9,6 +9,9 @@
 namespace fieldcvt {
 
 using Vec3 = Eigen::Vector3d;
+
+//! π, for the angles the stages measure and bound (C++17 has no std::numbers::pi).
+constexpr double kPi = 3.14159265358979323846;
 using Face = std::array<int, 3>;
 
 struct TriMesh {

@@ -22,7 +22,6 @@ namespace fieldcvt {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegrees = 180.0 / kPi;
 
 void checkFaceIndices(const TriMesh& mesh, const char* who)

@@ -185,7 +185,7 @@ RdtResult buildRdt(int n, const std::vector<std::array<int, 3>>& triangles, Seed
 // it, (j, l) is the border there. Returns the triangles without those of slit pieces.
 std::vector<std::array<int, 3>> withoutSlitPieces(const std::vector<Vec3>& seeds, const RvdResult& rvd, int& slitPieces)
 {
-    constexpr double kSlitAngle = 30 * 3.14159265358979323846 / 180;
+    constexpr double kSlitAngle = 30 * kPi / 180;
     const int pieceCount = static_cast<int>(rvd.pieceSeed.size());
     std::vector<int> faceCount(pieceCount, 0), nearest(seeds.size(), -1);
     for (const auto& t : rvd.pieceTriangles)

@@ -20,7 +20,7 @@ inline double meanRatio(const Vec3& a, const Vec3& b, const Vec3& c)
 inline double smallestAngle(const Vec3& p0, const Vec3& p1, const Vec3& p2)
 {
     const Vec3 p[3] = {p0, p1, p2};
-    double smallest = 3.14159265358979323846;
+    double smallest = kPi;
     for (int k = 0; k < 3; ++k) {
         const Vec3 u = p[(k + 1) % 3] - p[k], w = p[(k + 2) % 3] - p[k];
         smallest = std::min(smallest, std::atan2(u.cross(w).norm(), u.dot(w)));

@@ -22,8 +22,6 @@ using namespace fieldcvt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Smallest angle (degrees) between the line of `axis` and the six directions of (d, n).
 double angleToField(const Vec3& d, const Vec3& n, const Vec3& axis)
 {

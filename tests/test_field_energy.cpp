@@ -13,8 +13,6 @@ using namespace fieldcvt;
 
 namespace {
 
-const double kPi = 3.14159265358979323846;
-
 Vec3 randomUnit(std::mt19937_64& rng)
 {
     std::normal_distribution<double> g;

@@ -13,8 +13,6 @@ using namespace fieldcvt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Distance between the six-direction sets of (a, n) and (b, n): min over b's rotations.
 double setDistance(const Vec3& a, const Vec3& b, const Vec3& n)
 {

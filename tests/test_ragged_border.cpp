@@ -14,8 +14,6 @@ using namespace fieldcvt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 //! A height field over a `cells` x `cells` grid of [-1, 1]^2, keeping the squares whose centre
 //! is inside a wavy circle and outside `notches` radial slits one square wide and 0.3 long:
 //! a range map's ragged border (steps of one grid square).

@@ -13,7 +13,6 @@
 
 namespace fieldcvt::valence {
 
-constexpr double kPi = 3.14159265358979323846;
 //! Operations and repairs: a face turned more than ~32° from the surface normal counts as folded.
 constexpr double kMinNormalDot = 0.85;
 
