@@ -26,11 +26,8 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 [ $# -eq 2 ] || { echo "usage: $0 trixie|forky OUTDIR" >&2; exit 2; }
 release="$1"
-case "$release" in
-  trixie) tag=debian13; meshlab_release=2022.02 ;;
-  forky) tag=forky; meshlab_release=2025.07 ;;
-  *) echo "package-debian: unknown release '$release' (trixie or forky)" >&2; exit 2 ;;
-esac
+source "$here/scripts/debian-release.sh"
+debian_release "$release" || { echo "package-debian: unknown release '$release' (trixie or forky)" >&2; exit 2; }
 mkdir -p "$2"
 out="$(cd "$2" && pwd)"
 build="${FCVT_BUILD_DIR:-$here/build}"

@@ -6,11 +6,8 @@ skip() { echo "SKIP: $*"; exit 77; }
 # FCVT_DEBIAN_RELEASE (set by tests/debian13.cmake): trixie (Debian 13, MeshLab 2022.02, the
 # default) or forky (Debian testing, MeshLab 2025.07); each has its root and its results.
 release="${FCVT_DEBIAN_RELEASE:-trixie}"
-case "$release" in
-  trixie) tag=debian13; meshlab_release=2022.02; meshlab_next=2022.03 ;;
-  forky) tag=forky; meshlab_release=2025.07; meshlab_next=2025.08 ;;
-  *) echo "FAIL: unknown FCVT_DEBIAN_RELEASE $release" >&2; exit 1 ;;
-esac
+source "$SOURCE/scripts/debian-release.sh"
+debian_release "$release" || { echo "FAIL: unknown FCVT_DEBIAN_RELEASE $release" >&2; exit 1; }
 root="$BUILD/$tag-root"
 out="$BUILD/$tag-out"
 plugin_in_root="/usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_fcvt.so"
