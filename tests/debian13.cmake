@@ -56,8 +56,36 @@ function(fcvt_debian_release_tests tag release)
               "${_work}/${_t}" ${_extra})
     list(APPEND _tests ${tag}_meshlab_${_t})
   endforeach()
+  add_test(NAME ${tag}_meshlab_python_names
+    COMMAND bash "${_d13}/meshlab_test.sh" ${_d13_args} "${_d13}/python_names.sh" "${_work}/python_names")
+  list(APPEND _tests ${tag}_meshlab_python_names)
   set_tests_properties(${_tests} PROPERTIES LABELS ${tag} TIMEOUT 900 SKIP_RETURN_CODE 77
     FIXTURES_REQUIRED "${tag}_built;${tag}_installed" ENVIRONMENT "${_env}")
+endfunction()
+
+# forky_upstream_double_*: the double-precision plugin for MeshLab 2025.07's downloads and
+# pymeshlab, built in the forky root with scripts/build-upstream-plugin.sh against the 2025.07
+# source tree (its libmeshlab-common and io_base built double there; about 5 minutes), then
+# loaded by that build's plugin manager (version and precision checks) through the test host and
+# run with the meshlabserver tests' scripts.
+function(fcvt_upstream_double_tests)
+  set(_env "FCVT_DEBIAN_RELEASE=forky")
+  set(_work "${CMAKE_CURRENT_BINARY_DIR}/forky_upstream_double")
+  add_test(NAME forky_upstream_double_build COMMAND bash "${_d13}/upstream_build.sh" ${_d13_args})
+  set_tests_properties(forky_upstream_double_build PROPERTIES LABELS "forky;package" TIMEOUT 1800
+    SKIP_RETURN_CODE 77 FIXTURES_REQUIRED forky_built FIXTURES_SETUP forky_upstream_double
+    RESOURCE_LOCK forky_root ENVIRONMENT "${_env}")
+  set(_tests)
+  foreach(_t meshlab/plugin_loads meshlab/remesh_torus meshlab/invalid_parameter meshlab/quality_report
+             debian13/python_names)
+    get_filename_component(_name ${_t} NAME)
+    add_test(NAME forky_upstream_double_meshlab_${_name}
+      COMMAND bash "${_d13}/meshlab_test.sh" ${_d13_args} "${CMAKE_CURRENT_SOURCE_DIR}/${_t}.sh"
+              "${_work}/${_name}")
+    list(APPEND _tests forky_upstream_double_meshlab_${_name})
+  endforeach()
+  set_tests_properties(${_tests} PROPERTIES LABELS forky TIMEOUT 900 SKIP_RETURN_CODE 77
+    FIXTURES_REQUIRED "forky_built;forky_upstream_double" ENVIRONMENT "${_env};FCVT_UPSTREAM_DOUBLE=1")
 endfunction()
 
 if(FCVT_TEST_DEBIAN13)
@@ -65,4 +93,5 @@ if(FCVT_TEST_DEBIAN13)
 endif()
 if(FCVT_TEST_FORKY)
   fcvt_debian_release_tests(forky forky)
+  fcvt_upstream_double_tests()
 endif()

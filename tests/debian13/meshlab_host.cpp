@@ -5,12 +5,14 @@
 // It takes the subset of meshlabserver 2020.09's command line the tests in tests/meshlab/ use and
 // prints the same lines they check, so those tests run unchanged against MeshLab 2022.02:
 //
-//   fcvt-meshlab-host -P PLUGIN_DIR [-d DUMP] [-i MESH...] [-o OUT [-l x|c|N] [-m vc vq ...]]...
+//   fcvt-meshlab-host -P PLUGIN_DIR [-d DUMP] [-y NAMES] [-i MESH...] [-o OUT [-l x|c|N] [-m vc vq ...]]...
 //                     [-s SCRIPT.mlx]
 //
 //   -P   the plugin directory PluginManager::loadPlugins() loads (every *.so in it)
 //   -d   writes the filters of libfilter_fcvt.so and their parameters in meshlabserver's -d
 //        format (only ours: most MeshLab 2022.02 filters cannot declare parameters without a mesh)
+//   -y   writes, per filter of libfilter_fcvt.so, the names pymeshlab gives it and its
+//        parameters (pythonFilterName, RichParameter::pythonName): "filter: param param ..."
 //   -i   opens meshes with meshlab::loadMeshWithStandardParameters (the IO plugins)
 //   -s   applies the script: per filter, the filter's own parameter list (initParameterList)
 //        with the script's values set over it (a script may omit parameters, not add unknown
@@ -102,6 +104,24 @@ void dumpFilters(PluginManager& pm, const QString& path)
     std::fclose(fp);
 }
 
+// The names a pymeshlab built on this MeshLab calls our filters and parameters by.
+void dumpPythonNames(PluginManager& pm, const QString& path)
+{
+    FILE* fp = std::fopen(qUtf8Printable(path), "w");
+    if (fp == nullptr) die("cannot write " + path);
+    MeshDocument md;
+    for (FilterPlugin* plugin : pm.filterPluginIterator()) {
+        if (plugin->pluginFileInfo().fileName() != "libfilter_fcvt.so") continue;
+        for (QAction* action : plugin->actions()) {
+            std::fprintf(fp, "%s:", qUtf8Printable(plugin->pythonFilterName(action)));
+            for (const RichParameter& p : plugin->initParameterList(action, md))
+                std::fprintf(fp, " %s", qUtf8Printable(p.pythonName()));
+            std::fprintf(fp, "\n");
+        }
+    }
+    std::fclose(fp);
+}
+
 bool progress(const int, const char*) { return true; }
 
 void runScript(PluginManager& pm, MeshDocument& md, const QString& script)
@@ -174,7 +194,7 @@ int main(int argc, char* argv[])
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
 
-    QString pluginDir, dump, script;
+    QString pluginDir, dump, pythonNames, script;
     QStringList inputs;
     std::vector<Output> outputs;
     for (int i = 1; i < argc; ++i) {
@@ -184,6 +204,8 @@ int main(int argc, char* argv[])
             pluginDir = QString::fromLocal8Bit(argv[++i]);
         } else if (a == "-d" && hasValue) {
             dump = QFileInfo(QString::fromLocal8Bit(argv[++i])).absoluteFilePath();
+        } else if (a == "-y" && hasValue) {
+            pythonNames = QFileInfo(QString::fromLocal8Bit(argv[++i])).absoluteFilePath();
         } else if (a == "-s" && hasValue) {
             script = QFileInfo(QString::fromLocal8Bit(argv[++i])).absoluteFilePath();
         } else if (a == "-i") {
@@ -204,7 +226,7 @@ int main(int argc, char* argv[])
             }
             outputs.push_back(out);
         } else {
-            die(QString("usage: fcvt-meshlab-host -P PLUGIN_DIR [-d DUMP] [-i MESH...] "
+            die(QString("usage: fcvt-meshlab-host -P PLUGIN_DIR [-d DUMP] [-y NAMES] [-i MESH...] "
                         "[-o OUT [-l x|c|N] [-m FLAGS...]]... [-s SCRIPT] (at '%1')")
                     .arg(QString::fromStdString(a)));
         }
@@ -223,6 +245,7 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "%u plugins loaded\n", pm.size());
 
     if (!dump.isEmpty()) dumpFilters(pm, dump);
+    if (!pythonNames.isEmpty()) dumpPythonNames(pm, pythonNames);
 
     MeshDocument md;
     for (const QString& in : inputs) {
