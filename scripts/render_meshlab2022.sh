@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The README's picture of the filter in MeshLab 2022.02 (Debian 13): in the Debian 13 root that
-# the debian13 tests leave in BUILD/debian13-root (our package and fcvt-meshlab-host installed),
+# The README's picture of the filter in MeshLab 2022.02 (Debian 13), or 2025.07 with
+# FCVT_DEBIAN_RELEASE=forky: in the root that the debian13 (forky) tests leave in
+# BUILD/debian13-root (BUILD/forky-root), with our package and fcvt-meshlab-host installed,
 # runs "Remeshing: Field-Aligned CVT (FCVT)" (resources/fcvt-remesh.mlx with VERTICES vertices)
 # and "Remeshing Quality Report (FCVT)" (colorIrregular on) on resources/bunny.ply through
-# MeshLab 2022.02's own plugin manager, then opens the coloured result in the root's MeshLab
-# 2022.02 GUI under Xvfb (tests/debian13/gui.sh) and writes its screenshot to OUT.png.
+# that MeshLab's own plugin manager, then opens the coloured result in the root's MeshLab
+# GUI under Xvfb (tests/debian13/gui.sh) and writes its screenshot to OUT.png.
 #
 # Usage (as root): render_meshlab2022.sh OUT.png [VERTICES]   (default 5000; BUILD: $FCVT_BUILD_DIR or build/)
 set -euo pipefail
@@ -12,10 +13,14 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 [ $# -ge 1 ] || { sed -n '2,9p' "$0" >&2; exit 2; }
 out="$1"; vertices="${2:-5000}"
 build="$(cd "${FCVT_BUILD_DIR:-$here/build}" && pwd)"
-root="$build/debian13-root"
-[ "$(cat "$build/debian13-out/status" 2>/dev/null)" = ok ] \
-  || { echo "render_meshlab2022: no Debian 13 root; run: cd build && ctest -L debian13" >&2; exit 1; }
-work="$build/render-meshlab2022"
+release="${FCVT_DEBIAN_RELEASE:-trixie}"
+source "$here/scripts/debian-release.sh"
+debian_release "$release" || { echo "render_meshlab2022: unknown FCVT_DEBIAN_RELEASE $release" >&2; exit 2; }
+export FCVT_DEBIAN_RELEASE="$release"
+root="$build/$tag-root"
+[ "$(cat "$build/$tag-out/status" 2>/dev/null)" = ok ] \
+  || { echo "render_meshlab2022: no $release root; run: cd build && ctest -L $tag" >&2; exit 1; }
+work="$build/render-meshlab-$tag"
 rm -rf "$work"; mkdir -p "$work"
 
 body() { sed -n '/<filter /,/<\/filter>/p' "$1"; }
