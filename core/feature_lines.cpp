@@ -142,7 +142,7 @@ std::vector<CurvePiece> restrictCurvesToCells(const std::vector<Vec3>& seeds, co
             const Vec3 p = a + (k + 0.5) / n * (b - a);
             uint32_t nearest = 0;
             double d2 = 0;
-            tree.knnSearch(p.data(), 1, &nearest, &d2);
+            if (tree.knnSearch(p.data(), 1, &nearest, &d2) == 0) continue;  // no seeds
             Part* part = nullptr;
             for (size_t q = first; q < parts.size(); ++q)
                 if (parts[q].seed == int(nearest)) part = &parts[q];

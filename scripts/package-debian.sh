@@ -18,15 +18,18 @@
 #    linked to the release's libmeshlab-common;
 # 4. the .deb in OUTDIR.
 #
-# A complete root from an earlier run is reused (the marker BUILD/<tag>-root/.fcvt-ready, which
-# records the package list); FCVT_DEBIAN13_FRESH=1 (or FCVT_DEBIAN_FRESH=1) makes a new one.
-# Everything stays inside BUILD. Exit status 77 (what CTest counts as skipped) when not run as
+# A complete root from an earlier run is reused (the marker BUILD/<tag>-root/.fcvt-ready);
+# FCVT_DEBIAN13_FRESH=1 (or FCVT_DEBIAN_FRESH=1) makes a new one: a copy of the cached root
+# (scripts/root-cache.sh: /var/cache/fcvt-roots, keyed by release, archive and package list;
+# FCVT_ROOT_CACHE=off disables it) when there is one, else with debootstrap and apt, which then
+# fills the cache. Everything else stays inside BUILD. Exit status 77 (what CTest counts as skipped) when not run as
 # root or when debootstrap fails (e.g. no network).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 [ $# -eq 2 ] || { echo "usage: $0 trixie|forky OUTDIR" >&2; exit 2; }
 release="$1"
 source "$here/scripts/debian-release.sh"
+source "$here/scripts/root-cache.sh"
 debian_release "$release" || { echo "package-debian: unknown release '$release' (trixie or forky)" >&2; exit 2; }
 mkdir -p "$2"
 out="$(cd "$2" && pwd)"
@@ -57,50 +60,10 @@ packages=(
   lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 libxerces-c3.2t64
 )
 
-fresh="${FCVT_DEBIAN_FRESH:-${FCVT_DEBIAN13_FRESH:-0}}"
-if [ "$fresh" = 1 ] || [ ! -e "$root/.fcvt-ready" ]; then
-  archive="$(bash "$here/scripts/apt-archive.sh" "$release")" || skip "no Debian archive in this machine's apt sources"
-  rm -rf "$root"
-  step "debootstrap $release into $root"
-  # Debian 12's debootstrap has no script named forky: testing is made as sid is.
-  script=""
-  [ -e "/usr/share/debootstrap/scripts/$release" ] || script=/usr/share/debootstrap/scripts/sid
-  debootstrap --variant=minbase "$release" "$root" "$archive" $script >"$build/$tag-debootstrap.log" 2>&1 || {
-    tail -n 20 "$build/$tag-debootstrap.log" >&2
-    rm -rf "$root"
-    skip "debootstrap failed (log: $build/$tag-debootstrap.log)"
-  }
-  step_done
-  printf 'Types: deb deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
-    "$archive" "$release" > "$root/etc/apt/sources.list.d/debian.sources"
-  # A testing archive's Release file carries a Valid-Until date; a mirror kept as of a day (as
-  # this machine's may be) would be refused after it.
-  echo 'Acquire::Check-Valid-Until "false";' > "$root/etc/apt/apt.conf.d/99fcvt-valid-until"
-  rm -f "$root/etc/apt/sources.list"
-  step "apt-get install ${#packages[@]} packages (MeshLab $meshlab_release, build dependencies, Xvfb) in the root"
-  in_root apt-get update -qq
-  in_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >"$build/$tag-apt.log" 2>&1 || {
-    tail -n 30 "$build/$tag-apt.log" >&2; echo "package-debian: apt-get install failed in the root" >&2; exit 1; }
-  step_done
-  touch "$root/.fcvt-ready"
-fi
-# A root made by an earlier version of this list gets what the list has gained since.
-missing=()
-for p in "${packages[@]}"; do
-  in_root dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  step "apt-get install ${missing[*]} in the root"
-  in_root apt-get update -qq
-  in_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >>"$build/$tag-apt.log" 2>&1 || {
-    tail -n 30 "$build/$tag-apt.log" >&2; echo "package-debian: apt-get install failed in the root" >&2; exit 1; }
-  step_done
-fi
-echo "MeshLab in the root: $(in_root dpkg-query -W -f='${Version}' meshlab)"
-
-# The MeshLab's headers and vcglib: the release's meshlab source package.
+# The MeshLab's headers and vcglib: the release's meshlab source package, in the root's
+# /usr/src/meshlab.
 src="$root/usr/src/meshlab"
-if [ ! -f "$src/src/common/plugins/interfaces/filter_plugin.h" ]; then
+fetch_meshlab_source() {
   step "apt-get source meshlab ($release)"
   rm -rf "$root/usr/src/meshlab-get" "$src"
   mkdir -p "$root/usr/src/meshlab-get"
@@ -129,7 +92,69 @@ if [ ! -f "$src/src/common/plugins/interfaces/filter_plugin.h" ]; then
   [ -f "$src/src/common/plugins/interfaces/filter_plugin.h" ] \
     || { echo "package-debian: no MeshLab $meshlab_release plugin headers in $src" >&2; exit 1; }
   step_done
+}
+
+make_root() {
+  rm -rf "$root"
+  step "debootstrap $release into $root"
+  # Debian 12's debootstrap has no script named forky: testing is made as sid is.
+  script=""
+  [ -e "/usr/share/debootstrap/scripts/$release" ] || script=/usr/share/debootstrap/scripts/sid
+  debootstrap --variant=minbase "$release" "$root" "$archive" $script >"$build/$tag-debootstrap.log" 2>&1 || {
+    tail -n 20 "$build/$tag-debootstrap.log" >&2
+    rm -rf "$root"
+    skip "debootstrap failed (log: $build/$tag-debootstrap.log)"
+  }
+  step_done
+  printf 'Types: deb deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+    "$archive" "$release" > "$root/etc/apt/sources.list.d/debian.sources"
+  # A testing archive's Release file carries a Valid-Until date; a mirror kept as of a day (as
+  # this machine's may be) would be refused after it.
+  echo 'Acquire::Check-Valid-Until "false";' > "$root/etc/apt/apt.conf.d/99fcvt-valid-until"
+  rm -f "$root/etc/apt/sources.list"
+  step "apt-get install ${#packages[@]} packages (MeshLab $meshlab_release, build dependencies, Xvfb) in the root"
+  in_root apt-get update -qq
+  in_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >"$build/$tag-apt.log" 2>&1 || {
+    tail -n 30 "$build/$tag-apt.log" >&2; echo "package-debian: apt-get install failed in the root" >&2; exit 1; }
+  step_done
+  fetch_meshlab_source
+  in_root apt-get clean   # the downloaded .debs: not needed again, and not worth caching
+  touch "$root/.fcvt-ready"
+}
+
+fresh="${FCVT_DEBIAN_FRESH:-${FCVT_DEBIAN13_FRESH:-0}}"
+if [ "$fresh" = 1 ] || [ ! -e "$root/.fcvt-ready" ]; then
+  archive="$(bash "$here/scripts/apt-archive.sh" "$release")" || skip "no Debian archive in this machine's apt sources"
+  entry=""
+  root_cache_enabled && entry="$(root_cache_entry "$tag" "$release" "$archive" "${packages[@]}")"
+  if [ -n "$entry" ] && root_cache_fresh "$entry"; then
+    step "unpack the cached $release root $entry"
+    root_cache_restore "$entry" "$root"
+    step_done
+  else
+    make_root
+    if [ -n "$entry" ]; then
+      step "cache the root as $entry"
+      root_cache_save "$root" "$entry" || echo "   (could not write the cache; going on)"
+      step_done
+    fi
+  fi
 fi
+# A root made by an earlier version of this list gets what the list has gained since.
+missing=()
+for p in "${packages[@]}"; do
+  in_root dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  step "apt-get install ${missing[*]} in the root"
+  in_root apt-get update -qq
+  in_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >>"$build/$tag-apt.log" 2>&1 || {
+    tail -n 30 "$build/$tag-apt.log" >&2; echo "package-debian: apt-get install failed in the root" >&2; exit 1; }
+  step_done
+fi
+echo "MeshLab in the root: $(in_root dpkg-query -W -f='${Version}' meshlab)"
+
+[ -f "$src/src/common/plugins/interfaces/filter_plugin.h" ] || fetch_meshlab_source
 
 step "build the core and the plugin inside the root (MeshLab $meshlab_release, FilterPlugin API)"
 in_root cmake -S "$here" -B "$d13build" -DCMAKE_BUILD_TYPE=Release \

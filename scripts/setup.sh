@@ -11,7 +11,7 @@ packages=(
   libeigen3-dev liblbfgspp-dev libnanoflann-dev libcgal-dev
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-  meshlab xvfb xauth python3 debootstrap
+  meshlab xvfb xauth python3 debootstrap zstd
   x11-apps x11-utils
   f3d optipng pngquant xdotool
   clang libclang-rt-14-dev libomp-dev clang-format
