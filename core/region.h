@@ -69,6 +69,12 @@ struct RegionPatch {
 //! is unspecified.
 bool pinBorder(const RegionSubmesh& region, TriMesh& patch, std::vector<int>& original, std::string& failure);
 
+//! Edge flips inside the patch (never of its border edges) that raise the smaller of the two
+//! faces' smallest angles, in up to `maxPasses` passes: a corner of the region's border under
+//! 40° is best one triangle, which the valence optimisation's border valence 4 may have split.
+//! Returns the flips made.
+int flipForAngles(RegionPatch& patch, int maxPasses = 10);
+
 //! True when the patch's border edges are exactly the region's (as whole-mesh vertex pairs,
 //! same direction): no crack, no T-junction at the seam.
 bool patchMatchesBorder(const RegionSubmesh& region, const RegionPatch& patch);

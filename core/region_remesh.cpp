@@ -165,6 +165,7 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
         if (optimiseSeam(region, optimised, params.valence) && patchMatchesBorder(region, optimised))
             outcome.patch = std::move(optimised);
     }
+    flipForAngles(outcome.patch);
     if (params.outputInFloat)
         for (Vec3& x : outcome.patch.mesh.vertices) x = x.cast<float>().cast<double>();
     if (!patchMatchesBorder(region, outcome.patch)) {

@@ -201,7 +201,7 @@ bool removeBorderVertex(PatchEdit& edit, int s)
         if (f < 0) break;
         if (steps > int(fan.size())) return false;
     }
-    if (int(outline.size()) != int(fan.size()) + 1) return false;  // a fan that is not one disk sector  // a fan that is not one disk sector
+    if (int(outline.size()) != int(fan.size()) + 1) return false;  // a fan that is not one disk sector
     const int m = int(outline.size()) - 1;
     for (int i = 0; i <= m; ++i)
         for (int j = i + 1; j <= m; ++j)
@@ -222,7 +222,7 @@ bool removeBorderVertex(PatchEdit& edit, int s)
     const auto p = [&](int i) -> const Vec3& { return edit.vertices[size_t(outline[size_t(i)])]; };
     auto usable = [&](int i, int j) { return j == i + 1 || !edit.hasEdge(outline[size_t(i)], outline[size_t(j)]); };
     if (!usable(0, m)) return undo();
-    const double none = -1;
+    const double none = -1e9;
     std::vector<double> best(size_t((m + 1) * (m + 1)), none);
     std::vector<int> split(best.size(), -1);
     for (int i = 0; i < m; ++i) best[size_t(i * (m + 1) + i + 1)] = 180;
@@ -232,14 +232,17 @@ bool removeBorderVertex(PatchEdit& edit, int s)
             if (!usable(i, j)) continue;
             for (int k = i + 1; k < j; ++k) {
                 const double left = best[size_t(i * (m + 1) + k)], right = best[size_t(k * (m + 1) + j)];
-                if (left <= 0 || right <= 0) continue;
+                if (left <= none || right <= none) continue;
+                // A triangle facing away from the fan scores below every other, the least turned
+                // best: a jagged border may leave no other way (the seam optimisation then moves it).
                 const Vec3 n = (p(k) - p(i)).cross(p(j) - p(i));
-                if (!(n.dot(normal) > 0)) continue;
-                const double score = std::min({smallestAngleDegrees(p(i), p(k), p(j)), left, right});
+                const double facing = n.norm() > 0 ? n.normalized().dot(normal.normalized()) : -1;
+                const double shape = facing > 0 ? smallestAngleDegrees(p(i), p(k), p(j)) : facing - 2;
+                const double score = std::min({shape, left, right});
                 if (score > best[size_t(i * (m + 1) + j)]) best[size_t(i * (m + 1) + j)] = score, split[size_t(i * (m + 1) + j)] = k;
             }
         }
-    if (!(best[size_t(m)] > 0)) return undo();
+    if (!(best[size_t(m)] > none)) return undo();
     std::vector<std::pair<int, int>> stack{{0, m}};
     while (!stack.empty()) {
         const auto [i, j] = stack.back();
@@ -317,11 +320,19 @@ bool pinBorder(const RegionSubmesh& region, TriMesh& patch, std::vector<int>& or
         }
     }
     if (!insertBorderVertices(region, loops, place, edit, original, failure)) return false;
+    // Removed in passes: a hole that cannot be filled yet may be once its neighbours are gone.
+    std::vector<int> left;
     for (int s : patchBorder)
-        if (place[size_t(s)].vertex < 0 && !removeBorderVertex(edit, s)) {
-            failure = "a hole left by moving the remeshed border onto the region's border could not be filled";
-            return false;
-        }
+        if (place[size_t(s)].vertex < 0) left.push_back(s);
+    for (size_t before = left.size() + 1; !left.empty() && left.size() < before;) {
+        before = left.size();
+        left.erase(std::remove_if(left.begin(), left.end(), [&](int s) { return removeBorderVertex(edit, s); }), left.end());
+    }
+    if (!left.empty()) {
+        failure = std::to_string(left.size()) + " hole(s) left by moving the remeshed border onto the region's border could "
+                  "not be filled";
+        return false;
+    }
     // Compact: the removed vertices go.
     std::vector<int> index(edit.vertices.size(), -1);
     TriMesh out;
@@ -342,6 +353,47 @@ bool pinBorder(const RegionSubmesh& region, TriMesh& patch, std::vector<int>& or
     patch = std::move(out);
     original = std::move(outOriginal);
     return true;
+}
+
+int flipForAngles(RegionPatch& patch, int maxPasses)
+{
+    PatchEdit edit;
+    edit.vertices = patch.mesh.vertices;
+    edit.facesOf.resize(edit.vertices.size());
+    for (const Face& f : patch.mesh.faces) edit.add(f);
+    const auto at = [&](int v) -> const Vec3& { return edit.vertices[size_t(v)]; };
+    int flips = 0;
+    for (int pass = 0; pass < maxPasses; ++pass) {
+        int flipped = 0;
+        for (int f = 0; f < edit.faceCount(); ++f)
+            for (int k = 0; k < 3 && edit.alive[size_t(f)]; ++k) {
+                // Edge a -> b of f = (a, b, c), and g = (b, a, d) on its other side.
+                const Face t = edit.faces[size_t(f)];
+                const int a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+                const int g = edit.faceWith(b, a);
+                if (g < 0) continue;
+                const Face u = edit.faces[size_t(g)];
+                const int d = u[0] != a && u[0] != b ? u[0] : u[1] != a && u[1] != b ? u[1] : u[2];
+                if (c == d || edit.hasEdge(c, d)) continue;
+                const double before = std::min(smallestAngleDegrees(at(a), at(b), at(c)), smallestAngleDegrees(at(b), at(a), at(d)));
+                const double after = std::min(smallestAngleDegrees(at(c), at(d), at(b)), smallestAngleDegrees(at(d), at(c), at(a)));
+                // The two new triangles must face the way the old ones did (a convex quadrilateral).
+                const Vec3 n = (at(b) - at(a)).cross(at(c) - at(a)) + (at(a) - at(b)).cross(at(d) - at(b));
+                const bool facing = (at(d) - at(c)).cross(at(b) - at(c)).dot(n) > 0 && (at(c) - at(d)).cross(at(a) - at(d)).dot(n) > 0;
+                if (!(after > before + 1e-9) || !facing) continue;
+                edit.kill(f);
+                edit.kill(g);
+                edit.add({c, d, b});
+                edit.add({d, c, a});
+                ++flipped;
+            }
+        flips += flipped;
+        if (flipped == 0) break;
+    }
+    patch.mesh.faces.clear();
+    for (int f = 0; f < edit.faceCount(); ++f)
+        if (edit.alive[size_t(f)]) patch.mesh.faces.push_back(edit.faces[size_t(f)]);
+    return flips;
 }
 
 bool patchMatchesBorder(const RegionSubmesh& region, const RegionPatch& patch)
