@@ -218,6 +218,7 @@ nlohmann::ordered_json regionJson(const std::string& property, const RegionRemes
             {"whole_mesh", run.wholeMesh},
             {"pieces", run.regions},
             {"kept_pieces", run.keptRegions},
+            {"added_faces", run.addedFaces},
             {"border_vertices", run.borderVertices},
             {"target_length", run.targetLength},
             {"worst_border_ratio", run.worstBorderRatio},

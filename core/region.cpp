@@ -49,6 +49,42 @@ std::vector<std::vector<int>> regionComponents(const TriMesh& mesh, const std::v
     return out;
 }
 
+int closePinches(const TriMesh& mesh, std::vector<char>& selected)
+{
+    int added = 0;
+    for (int round = 0; round < 100; ++round) {
+        std::vector<int> pieceOf(mesh.faces.size(), -1);
+        const std::vector<std::vector<int>> pieces = regionComponents(mesh, selected);
+        for (size_t p = 0; p < pieces.size(); ++p)
+            for (int f : pieces[p]) pieceOf[size_t(f)] = int(p);
+        // Border edges of each piece at each vertex: more than two is a pinch.
+        std::map<std::pair<int, int>, int> faceCount;
+        for (int f = 0; f < mesh.faceCount(); ++f)
+            if (selected[size_t(f)])
+                for (int k = 0; k < 3; ++k) ++faceCount[std::minmax(mesh.faces[size_t(f)][k], mesh.faces[size_t(f)][(k + 1) % 3])];
+        std::map<std::pair<int, int>, int> borderEdges;  // (piece, vertex) -> count
+        for (int f = 0; f < mesh.faceCount(); ++f)
+            if (selected[size_t(f)])
+                for (int k = 0; k < 3; ++k) {
+                    const int a = mesh.faces[size_t(f)][k], b = mesh.faces[size_t(f)][(k + 1) % 3];
+                    if (faceCount[std::minmax(a, b)] != 1) continue;
+                    ++borderEdges[{pieceOf[size_t(f)], a}];
+                    ++borderEdges[{pieceOf[size_t(f)], b}];
+                }
+        std::vector<char> pinch(mesh.vertices.size(), 0);
+        bool any = false;
+        for (const auto& [key, count] : borderEdges)
+            if (count > 2) pinch[size_t(key.second)] = 1, any = true;
+        if (!any) break;
+        for (int f = 0; f < mesh.faceCount(); ++f) {
+            const Face& t = mesh.faces[size_t(f)];
+            if (!selected[size_t(f)] && (pinch[size_t(t[0])] || pinch[size_t(t[1])] || pinch[size_t(t[2])]))
+                selected[size_t(f)] = 1, ++added;
+        }
+    }
+    return added;
+}
+
 RegionSubmesh extractRegion(const TriMesh& mesh, const std::vector<int>& faces)
 {
     RegionSubmesh region;

@@ -36,6 +36,12 @@ void checkRegionParams(const RegionParams& params);
 //! separate pieces), each a sorted list of face indices, ordered by their first face.
 std::vector<std::vector<int>> regionComponents(const TriMesh& mesh, const std::vector<char>& selected);
 
+//! Selects every face around each vertex where one edge-connected piece of the selection touches
+//! itself at a vertex only (its border passes there twice, as a brush selection often does): such
+//! a piece is not a disk with holes around that vertex and cannot be remeshed as one. Pieces of
+//! the selection that meet at a vertex only stay separate. Returns the faces added.
+int closePinches(const TriMesh& mesh, std::vector<char>& selected);
+
 //! One region cut out of its mesh.
 struct RegionSubmesh {
     TriMesh mesh;                     //!< the region's faces, vertices renumbered in first-use order
@@ -112,6 +118,7 @@ struct RegionRemeshResult {
     double targetLength = 0;         //!< the uniform target edge length over the selected area
     double worstBorderRatio = 1;     //!< worst border edge length / target (or its inverse)
     bool wholeMesh = false;          //!< every face was selected: a plain remesh()
+    int addedFaces = 0;              //!< faces added to the selection where it touched itself (closePinches)
 };
 
 //! Remeshes the faces with selected[f] != 0 (one flag per face of `input`): params.vertexCount

@@ -166,8 +166,9 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
             outcome.patch = std::move(optimised);
     }
     flipForAngles(outcome.patch);
-    if (params.outputInFloat)
-        for (Vec3& x : outcome.patch.mesh.vertices) x = x.cast<float>().cast<double>();
+    if (params.outputInFloat)  // the new vertices only: the border keeps the input's coordinates
+        for (size_t v = 0; v < outcome.patch.mesh.vertices.size(); ++v)
+            if (outcome.patch.original[v] < 0) outcome.patch.mesh.vertices[v] = outcome.patch.mesh.vertices[v].cast<float>().cast<double>();
     if (!patchMatchesBorder(region, outcome.patch)) {
         outcome.reason = "the remeshed faces do not meet the region's border edge to edge: kept as it is";
         return outcome;
@@ -228,6 +229,7 @@ RegionRemeshResult remeshRegion(const TriMesh& input, const std::vector<char>& s
     checkRegionParams(regionParams);
     checkSelection(input, selected, params);
     RegionRemeshResult out;
+    RemeshResult& result = out.result;
     if (std::all_of(selected.begin(), selected.end(), [](char s) { return s != 0; })) {
         out.result = remesh(input, params, progress);  // the full remesh, byte for byte
         out.wholeMesh = true;
@@ -237,15 +239,19 @@ RegionRemeshResult remeshRegion(const TriMesh& input, const std::vector<char>& s
         out.interiorMetrics = out.result.metrics;
         return out;
     }
-    const std::vector<std::vector<int>> pieces = regionComponents(input, selected);
+    std::vector<char> closed = selected;
+    out.addedFaces = closePinches(input, closed);
+    if (out.addedFaces > 0)
+        result.notes.push_back("the selection touched itself at a vertex: " + std::to_string(out.addedFaces) +
+                               " faces around such vertices were added to it");
+    const std::vector<std::vector<int>> pieces = regionComponents(input, closed);
     out.regions = int(pieces.size());
     double area = 0;
     for (int f = 0; f < input.faceCount(); ++f)
-        if (selected[size_t(f)]) area += faceArea(input, f);
+        if (closed[size_t(f)]) area += faceArea(input, f);
     out.targetLength = std::sqrt(2 * area / (std::sqrt(3.0) * params.vertexCount));
-    std::vector<char> remeshed = selected;  // the faces replaced: pieces kept as they are drop out
+    std::vector<char> remeshed = closed;  // the faces replaced: pieces kept as they are drop out
     std::vector<RegionPatch> patches;
-    RemeshResult& result = out.result;
     for (size_t i = 0; i < pieces.size(); ++i) {
         const RegionSubmesh region = extractRegion(input, pieces[i]);
         const Progress pieceProgress = [&](const std::string& stage, double percent) {

@@ -273,3 +273,25 @@ TEST(Region, OneFaceRegion)
     EXPECT_GT(out.result.mesh.faceCount(), sphere.faceCount());
     EXPECT_NE(warnings(out).find("times longer or shorter than the target"), std::string::npos) << warnings(out);
 }
+
+TEST(Region, APieceTouchingItselfAtAVertexIsClosedThere)
+{
+    const int n = 16;
+    const TriMesh grid = planeGrid(n);
+    std::vector<char> selected(grid.faces.size(), 0);
+    auto block = [&](int bx, int by) {  // 2 x 2 cells
+        for (int y = 2 * by; y < 2 * by + 2; ++y)
+            for (int x = 2 * bx; x < 2 * bx + 2; ++x) selected[size_t(2 * (y * n + x))] = selected[size_t(2 * (y * n + x) + 1)] = 1;
+    };
+    // A hook from block (2, 2) round to block (3, 3): they meet at the vertex (6, 6) only.
+    for (const auto& [x, y] : std::vector<std::pair<int, int>>{{2, 2}, {2, 1}, {3, 1}, {4, 1}, {4, 2}, {4, 3}, {3, 3}})
+        block(x, y);
+    std::vector<char> closed = selected;
+    EXPECT_GT(closePinches(grid, closed), 0);
+    EXPECT_EQ(closePinches(grid, closed), 0) << "closed once and for all";
+    EXPECT_EQ(regionComponents(grid, closed).size(), 1u);
+    const RegionRemeshResult out = remeshRegion(grid, selected, params(40));
+    EXPECT_GT(out.addedFaces, 0);
+    EXPECT_EQ(out.keptRegions, 0) << warnings(out);
+    expectStitched(grid, closed, out);
+}
