@@ -104,9 +104,8 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
     std::vector<double> mu = regionDensity(region, target, regionParams, &ratio);
     worstRatio = std::max(worstRatio, ratio);
     if (ratio > regionParams.warnRatio)
-        warnings.push_back(format("its border edges are up to %.2f times longer or shorter than the target length %.4g "
-                                  "(within %.0f times, no angle under 20 degrees is expected): the triangles along the "
-                                  "border may be worse",
+        warnings.push_back(format("its border edges are up to %.2f times longer or shorter than the target length %.4g; "
+                                  "beyond %.0f times the triangles along the border may have angles under 20 degrees",
                                   ratio, target, regionParams.warnRatio));
     // Vertices of an equilateral mesh with edge 1 / sqrt(mu): 2 / sqrt(3) per unit of mu-weighted area.
     const double area = surfaceArea(region.mesh);

@@ -271,7 +271,7 @@ TEST(Region, OneFaceRegion)
     EXPECT_EQ(out.regions, 1);
     EXPECT_EQ(out.keptRegions, 0) << warnings(out);
     EXPECT_GT(out.result.mesh.faceCount(), sphere.faceCount());
-    EXPECT_NE(warnings(out).find("times longer or shorter than the target"), std::string::npos) << warnings(out);
+    EXPECT_NE(warnings(out).find("times longer or shorter than the target length"), std::string::npos) << warnings(out);
 }
 
 TEST(Region, APieceTouchingItselfAtAVertexIsClosedThere)
