@@ -8,6 +8,7 @@
 #include "errors.h"
 #include "mesh_io.h"
 #include "metrics.h"
+#include "region.h"
 #include "remesh.h"
 
 #include <algorithm>
@@ -73,6 +74,18 @@ void printUsage()
         "                        as the run starts); output does not depend on it\n"
         "  --time-limit SEC      stop optimising after SEC seconds and write the best result so far,\n"
         "                        with a warning (default 0: no limit)\n"
+        "  --region PROPERTY     remesh only the faces of IN (a .ply) whose face property PROPERTY is\n"
+        "                        non-zero; the other faces and vertices are kept bit for bit, the\n"
+        "                        region's border vertices stay where they are and the new faces meet\n"
+        "                        them edge to edge (also on IN's own boundary, which is kept too). N or\n"
+        "                        L applies to the region's area, split between its separate pieces\n"
+        "                        (faces meeting at a vertex only are separate pieces); all faces\n"
+        "                        selected is the plain remesh. A .ply OUT gets PROPERTY back: 1 on the\n"
+        "                        new faces, IN's value on the kept ones. To mark faces in MeshLab:\n"
+        "                        select them, then Filters > Quality Measure and Computations > Per\n"
+        "                        Face Quality Function with \"func q0 =\" fsel (1 on selected faces, 0\n"
+        "                        elsewhere), File > Export Mesh As... .ply with the face's Quality\n"
+        "                        ticked, and --region quality\n"
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
         "                        history, field singularities (looked for only then), valence\n"
         "                        optimisation, repair, warnings\n"
@@ -156,7 +169,8 @@ struct RunFigures {
 //! The --report JSON of one run.
 nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string& outPath, const RemeshParams& params,
                                     double targetLength, const RemeshResult& result, const RunFigures& figures,
-                                    const std::vector<std::string>& warnings, const std::vector<std::string>& notes)
+                                    const std::vector<std::string>& warnings, const std::vector<std::string>& notes,
+                                    const nlohmann::ordered_json& region)
 {
     nlohmann::ordered_json times = nlohmann::ordered_json::object();
     times["read"] = figures.readSeconds;
@@ -191,8 +205,83 @@ nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string
                                                                          {"samples", result.lattice.samples}}
                                                 : nlohmann::ordered_json{{"kind", "random"}}},
             {"energy_history", energyHistoryJson(result.energyHistory)},
+            {"region", region},
             {"warnings", warnings},
             {"notes", notes}};
+}
+
+//! The --report's "region" object (--region): the pieces, the border kept, the new part's figures.
+nlohmann::ordered_json regionJson(const std::string& property, const RegionRemeshResult& run)
+{
+    const auto isNew = [](int origin) { return origin < 0; };
+    return {{"property", property},
+            {"whole_mesh", run.wholeMesh},
+            {"pieces", run.regions},
+            {"kept_pieces", run.keptRegions},
+            {"added_faces", run.addedFaces},
+            {"border_vertices", run.borderVertices},
+            {"target_length", run.targetLength},
+            {"worst_border_ratio", run.worstBorderRatio},
+            {"new_vertices", std::count_if(run.vertexOrigin.begin(), run.vertexOrigin.end(), isNew)},
+            {"new_faces", std::count_if(run.faceOrigin.begin(), run.faceOrigin.end(), isNew)},
+            {"metrics", metricsJson(run.result.metrics)},
+            {"interior_metrics", metricsJson(run.interiorMetrics)}};
+}
+
+//! Writes OUT: a PLY gets the field at its vertices when one was used and, with --region (a
+//! non-empty `regionProperty`), that property back: 1 on the new faces, the input's value on the
+//! kept ones (not when everything was selected: then the output is the plain remesh's).
+void writeOutput(const std::string& outPath, const RegionRemeshResult& run, const std::string& regionProperty,
+                 const VertexAttributes& inputAttributes)
+{
+    const RemeshResult& result = run.result;
+    VertexAttributes outputAttributes;
+    const bool writeField = !result.outputDirections.empty() && isPlyPath(outPath) &&
+                            result.outputDirections.size() == result.mesh.vertices.size() &&
+                            result.outputNormals.size() == result.mesh.vertices.size();
+    if (writeField) {
+        outputAttributes.normals = result.outputNormals;
+        outputAttributes.rosy = result.outputDirections;
+    }
+    const bool writeRegion = !regionProperty.empty() && !run.wholeMesh && isPlyPath(outPath);
+    if (writeRegion) {
+        outputAttributes.faceProperty = regionProperty;
+        for (int origin : run.faceOrigin)
+            outputAttributes.faceValues.push_back(origin < 0 ? 1.0 : inputAttributes.faceValues[size_t(origin)]);
+    }
+    writeMesh(outPath, result.mesh, writeField || writeRegion ? &outputAttributes : nullptr);
+}
+
+//! The summary's second line with --region.
+void printRegionLine(const RegionRemeshResult& run)
+{
+    const auto isNew = [](int origin) { return origin < 0; };
+    std::printf("region: %d piece%s (%d kept as %s), %ld new vertices, %ld new faces, %d border vertices kept; the "
+                "figures above are the new faces' (away from the border: theta_min %.1f deg, Q_avg %.3f)\n",
+                run.regions, run.regions == 1 ? "" : "s", run.keptRegions, run.keptRegions == 1 ? "it was" : "they were",
+                long(std::count_if(run.vertexOrigin.begin(), run.vertexOrigin.end(), isNew)),
+                long(std::count_if(run.faceOrigin.begin(), run.faceOrigin.end(), isNew)), run.borderVertices,
+                run.interiorMetrics.thetaMin, run.interiorMetrics.qAvg);
+}
+
+//! The area --target-length applies to: the region's with --region (`selected` not empty).
+double sizedArea(const TriMesh& input, const std::vector<char>& selected)
+{
+    if (selected.empty()) return surfaceArea(input);
+    double area = 0;
+    for (int f = 0; f < input.faceCount(); ++f) area += selected[size_t(f)] ? faceArea(input, f) : 0.0;
+    return area;
+}
+
+//! The faces whose `property` value is non-zero; InvalidInputError when there are none.
+std::vector<char> regionFromProperty(const std::string& path, const std::string& property, const VertexAttributes& attributes)
+{
+    std::vector<char> selected(attributes.faceValues.size(), 0);
+    for (size_t f = 0; f < selected.size(); ++f) selected[f] = attributes.faceValues[f] != 0 && !std::isnan(attributes.faceValues[f]);
+    if (std::none_of(selected.begin(), selected.end(), [](char c) { return c != 0; }))
+        throw InvalidInputError(path + ": the region is empty: no face has a non-zero " + quoteInput(property) +
+                                " (mark the faces to remesh first; see fcvt remesh --help)");
+    return selected;
 }
 
 }  // namespace
@@ -201,7 +290,7 @@ int runRemesh(const std::vector<std::string>& args)
 {
     const Arguments a(args,
                       {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations",
-                       "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation"},
+                       "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region"},
                       {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start"});
     if (a.flag("help")) {
         printUsage();
@@ -221,6 +310,10 @@ int runRemesh(const std::vector<std::string>& args)
     if (params.fieldSource == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " + inPath +
                          " is not a .ply file");
+    const auto region = a.text("region");
+    if (region && (region->empty() || !isPlyPath(inPath)))
+        throw UsageError("--region takes the region from a face property of a PLY input: it needs a property name and a "
+                         ".ply IN" + (isPlyPath(inPath) ? std::string() : " (" + inPath + " is not a .ply file)"));
     checkOutputPath(outPath, inPath);
     if (const auto reportPath = a.text("report")) {
         checkDistinctOutputs(*reportPath, outPath, "output mesh");
@@ -230,11 +323,13 @@ int runRemesh(const std::vector<std::string>& args)
     const auto start = std::chrono::steady_clock::now();
     MeshReadInfo readInfo;
     VertexAttributes inputAttributes;
+    if (region) inputAttributes.faceProperty = *region;
     const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
+    const std::vector<char> selected = region ? regionFromProperty(inPath, *region, inputAttributes) : std::vector<char>{};
     std::string sizeWarning;
     if (targetLength > 0) {
         try {
-            const VertexCountFromLength size = vertexCountForLength(surfaceArea(input), targetLength, "--target-length");
+            const VertexCountFromLength size = vertexCountForLength(sizedArea(input, selected), targetLength, "--target-length");
             params.vertexCount = size.vertexCount;
             sizeWarning = size.warning;
         } catch (const InvalidInputError& e) {
@@ -244,11 +339,15 @@ int runRemesh(const std::vector<std::string>& args)
     if (params.fieldSource == FieldSource::User) params.userDirections = userField(inPath, inputAttributes);
     const double readSeconds = secondsSince(start);
 
-    RemeshResult result;
+    RegionRemeshResult regionRun;
+    RemeshResult& result = regionRun.result;
     {
         ProgressPrinter progress(quiet);
         try {
-            result = remesh(input, params, progress.callback());
+            if (region)
+                regionRun = remeshRegion(input, selected, params, RegionParams{}, progress.callback());
+            else
+                result = remesh(input, params, progress.callback());
         } catch (const InvalidInputError& e) {
             throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
         } catch (const SolverError& e) {
@@ -257,15 +356,8 @@ int runRemesh(const std::vector<std::string>& args)
     }
 
     const auto writeStart = std::chrono::steady_clock::now();
-    VertexAttributes outputAttributes;
-    const bool writeField = !result.outputDirections.empty() && isPlyPath(outPath) &&
-                            result.outputDirections.size() == result.mesh.vertices.size() &&
-                            result.outputNormals.size() == result.mesh.vertices.size();
-    if (writeField) {
-        outputAttributes.normals = result.outputNormals;
-        outputAttributes.rosy = result.outputDirections;
-    }
-    writeMesh(outPath, result.mesh, writeField ? &outputAttributes : nullptr);
+    const std::string regionProperty = region ? *region : std::string();
+    writeOutput(outPath, regionRun, regionProperty, inputAttributes);
     const double writeSeconds = secondsSince(writeStart);
 
     // Warnings say that the output differs from what was asked (topology, parts, faces, vertex
@@ -287,7 +379,8 @@ int runRemesh(const std::vector<std::string>& args)
     if (auto reportPath = a.text("report"))
         writeJsonFile(*reportPath,
                       remeshReport(inPath, outPath, params, targetLength, result,
-                                   {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes));
+                                   {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes,
+                                   region ? regionJson(*region, regionRun) : nlohmann::ordered_json(nullptr)));
 
     for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", escapeControlCharacters(w).c_str());
     if (!quiet) {
@@ -299,6 +392,7 @@ int runRemesh(const std::vector<std::string>& args)
             outPath.c_str(), result.mesh.vertexCount(), result.mesh.faceCount(), outputTopology.genus,
             outputTopology.boundaryLoops, outputTopology.manifold() ? "" : " (NOT MANIFOLD)", m.qAvg, m.thetaMin, m.v6Pct,
             100 * m.dH, meanEdge, result.evaluations, totalSeconds);
+        if (region && !regionRun.wholeMesh) printRegionLine(regionRun);
     }
     return 0;
 }

@@ -53,12 +53,12 @@ QString filterInfo(FilterId filter)
 {
     switch (filter) {
     case kRemesh:
-        // Kept to three lines: MeshLab shows it above the parameters, and Qt gives the dialog at
+        // Kept to two lines: MeshLab shows it above the parameters, and Qt gives the dialog at
         // most 2/3 of the screen's height (682 pixels at 1280x1024), below which MeshLab 2020.09
         // clips the last row. What each parameter does is in its tooltip (the Help button).
-        return "Isotropic remeshing into a new layer: a centroidal Voronoi tessellation of the "
-               "surface with edges aligned to a 6-RoSy field, then valence optimisation (<b>\"Field-"
-               "Aligned Isotropic Surface Remeshing\"</b>). Figures and times go to the log.";
+        return "Isotropic remeshing into a new layer: a centroidal Voronoi tessellation with edges "
+               "aligned to a 6-RoSy field, then valence optimisation (<b>\"Field-Aligned Isotropic "
+               "Surface Remeshing\"</b>).";
     case kField:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "

@@ -52,6 +52,8 @@ constexpr const char* kMaxCrosses = "maxCrosses";
 constexpr int kDefaultMaxCrosses = 2000;
 //! Remeshing: repair the input first (repair.h); off = the strict check only.
 constexpr const char* kRepair = "repair";
+//! Remeshing: remesh only the selected faces (region.h), the rest kept; default off.
+constexpr const char* kSelectedOnly = "selectedOnly";
 //! Quality report: the layer d_RMS / d_H are measured against (itself = no distances).
 constexpr const char* kReferenceLayer = "referenceLayer";
 //! Name of the per-vertex Point3m attribute that holds a 6-RoSy field (representative d).

@@ -127,6 +127,13 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                               "pieces along a seam, and drop components too small for the vertex "
                               "count; each step is counted in the log. Off: the strict check only, "
                               "which refuses non-manifold edges and non-orientable pieces."));
+        // Issue 34, at the end like every new parameter.
+        par.addParam(RichBool(kSelectedOnly, false, parameterLabel(kSelectedOnly),
+                              "Remesh only the selected faces: the rest of the mesh is kept exactly "
+                              "(coordinates and attributes), the selection's border vertices stay "
+                              "where they are and the new faces meet them edge to edge. The target "
+                              "vertices or edge length apply to the selected area; the new faces "
+                              "are selected on the new layer."));
         break;
     }
     case kField: {

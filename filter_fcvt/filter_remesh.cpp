@@ -32,11 +32,19 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallB
         return fail(QString("FCVT: %1 must be 0 (vertex count) or 1 (target edge length), got %2")
                         .arg(parameterName(kSizeMode))
                         .arg(sizeMode));
+    const bool selectedOnly = boolParam(par, kSelectedOnly, false);
     if (sizeMode == kSizeByTargetLength) {
         MeshModel* input = currentTriangleLayer(md);
         if (input == nullptr) return false;
-        // In double and scale-robust (a float cross product overflows from coordinates ~1e10).
-        const double area = fieldcvt::surfaceArea(fcvt_plugin::toTriMesh(input->cm));
+        // In double and scale-robust (a float cross product overflows from coordinates ~1e10);
+        // the selected faces' area with selectedOnly.
+        const fieldcvt::TriMesh whole = fcvt_plugin::toTriMesh(input->cm);
+        double area = fieldcvt::surfaceArea(whole);
+        if (selectedOnly) {
+            const std::vector<char> selected = selectedFaces(*input);
+            area = 0;
+            for (int f = 0; f < whole.faceCount(); ++f) area += selected[size_t(f)] ? fieldcvt::faceArea(whole, f) : 0.0;
+        }
         fieldcvt::VertexCountFromLength size;
         try {
             size = fieldcvt::vertexCountForLength(area, targetLength, parameterName(kTargetLength).toStdString());
@@ -92,6 +100,7 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallB
     inputs.featuresFromSelection = boolParam(par, kFeatureSelection, false);
     inputs.colorIrregular = boolParam(par, kColorIrregular, false);
     params.repair = boolParam(par, kRepair, defaults.repair);
+    inputs.selectedOnly = selectedOnly;
     return remeshFcvt(md, params, inputs, cb);
 }
 
@@ -178,7 +187,9 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     MeshModel* input = currentTriangleLayer(md);
     if (input == nullptr) return false;
 
-    fieldcvt::TriMesh in = surfaceOf(*input, inputs.featuresFromSelection);
+    // The layer's own faces (not the file's triangulation) where the face selection is used.
+    fieldcvt::TriMesh in = surfaceOf(*input, inputs.featuresFromSelection || inputs.selectedOnly);
+    const std::vector<char> selected = inputs.selectedOnly ? selectedFaces(*input) : std::vector<char>{};
     fieldcvt::RemeshParams run = params;
     run.outputInFloat = sizeof(Scalarm) == sizeof(float);  // the new layer's coordinates
     readLayerInputs(*input, in, inputs, run);
@@ -200,7 +211,12 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
         return true;
     };
 
-    const fieldcvt::RemeshResult result = fieldcvt::remesh(in, run, progress);
+    fieldcvt::RegionRemeshResult region;
+    if (inputs.selectedOnly)
+        region = fieldcvt::remeshRegion(in, selected, run, fieldcvt::RegionParams{}, progress);
+    else
+        region.result = fieldcvt::remesh(in, run, progress);
+    const fieldcvt::RemeshResult& result = region.result;
 
     // The new layer is created only once the core succeeded, so a failure leaves the document
     // as it was; a failure while filling it removes it again.
@@ -233,6 +249,7 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
             if (!v.IsD()) inVerts.push_back(&v);
         if (inVerts.size() != in.vertices.size()) throw fieldcvt::Error("input vertex count changed during the filter");
         transferVertexData(in, inVerts, keep, output->cm);
+        if (inputs.selectedOnly) keepRegionData(*input, region.vertexOrigin, region.faceOrigin, keep, *output);
         if (keep.colour || keep.quality)
             outputLines.push_back(QString("FCVT: per-vertex %1 of '%2' transferred to the output by closest point")
                                       .arg(keep.colour && keep.quality ? "colour and quality"
@@ -249,8 +266,40 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
     }
     if (cb != nullptr) cb(100, "FCVT done");
     logReport(result, run, output->label(), input->label());
+    if (inputs.selectedOnly) logRegion(region);
     for (const QString& line : outputLines) logInfo(line);
     return true;
+}
+
+std::vector<char> FilterRun::selectedFaces(const MeshModel& input)
+{
+    std::vector<char> selected = faceSelection(input.cm);
+    if (std::none_of(selected.begin(), selected.end(), [](char s) { return s != 0; }))
+        fail(QString("FCVT: %1 is on but layer '%2' has no selected face (select the faces to remesh first, e.g. "
+                     "with the selection tool or Filters > Selection > Conditional Face Selection)")
+                 .arg(parameterName(kSelectedOnly))
+                 .arg(input.label()));
+    return selected;
+}
+
+void FilterRun::logRegion(const fieldcvt::RegionRemeshResult& region)
+{
+    if (region.wholeMesh) {
+        logInfo("FCVT region: every face was selected: the whole layer remeshed");
+        return;
+    }
+    const auto isNew = [](int origin) { return origin < 0; };
+    logInfo(QString("FCVT region: %1 piece(s) of the selection remeshed (%2 kept as they were), %3 new vertices, %4 new "
+                    "faces (selected on the new layer), %5 border vertices kept; the metrics above are the new faces' "
+                    "(away from the border: theta_min %6, Q_avg %7); worst border edge / target length %8")
+                .arg(region.regions - region.keptRegions)
+                .arg(region.keptRegions)
+                .arg(std::count_if(region.vertexOrigin.begin(), region.vertexOrigin.end(), isNew))
+                .arg(std::count_if(region.faceOrigin.begin(), region.faceOrigin.end(), isNew))
+                .arg(region.borderVertices)
+                .arg(num(region.interiorMetrics.thetaMin))
+                .arg(num(region.interiorMetrics.qAvg))
+                .arg(num(region.worstBorderRatio)));
 }
 
 void FilterRun::logReport(const fieldcvt::RemeshResult& r, const fieldcvt::RemeshParams& run, const QString& layerName,

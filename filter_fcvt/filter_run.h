@@ -8,6 +8,7 @@
 #include "field.h"
 #include "log_text.h"
 #include "mesh.h"
+#include "region.h"
 #include "remesh.h"
 
 namespace fcvt_plugin {
@@ -34,6 +35,7 @@ private:
         bool densityFromQuality = false;     //!< adaptive: ρ = per-vertex quality
         bool featuresFromSelection = false;  //!< feature lines = border of the face selection
         bool colorIrregular = false;         //!< colour the output's vertices by valence
+        bool selectedOnly = false;           //!< remesh only the selected faces (region.h)
     };
     //! The typed body of "Remeshing: Field-Aligned CVT (FCVT)".
     bool remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& params, const RemeshInputs& inputs, vcg::CallBackPos* cb);
@@ -61,6 +63,10 @@ private:
     //! new layer and its figures, the times.
     void logReport(const fieldcvt::RemeshResult& result, const fieldcvt::RemeshParams& run, const QString& layerName,
                    const QString& inputName);
+    //! The run's region line ("Remesh only selected faces").
+    void logRegion(const fieldcvt::RegionRemeshResult& region);
+    //! The selected faces of `input`; fails when there are none.
+    std::vector<char> selectedFaces(const MeshModel& input);
 
     //! Log lines (info / warning, shown red in the GUI) through plainLogText(), so that MeshLab's
     //! HTML log shows all of their text.

@@ -109,4 +109,48 @@ void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVe
     }
 }
 
+std::vector<char> faceSelection(const CMeshO& cm)
+{
+    std::vector<char> selected;
+    for (const CFaceO& f : cm.face)
+        if (!f.IsD()) selected.push_back(f.IsS() ? 1 : 0);
+    return selected;
+}
+
+void keepRegionData(const MeshModel& input, const std::vector<int>& vertexOrigin, const std::vector<int>& faceOrigin,
+                    const KeptData& keep, MeshModel& output)
+{
+    std::vector<const CVertexO*> inVerts;
+    for (const CVertexO& v : input.cm.vert)
+        if (!v.IsD()) inVerts.push_back(&v);
+    std::vector<const CFaceO*> inFaces;
+    for (const CFaceO& f : input.cm.face)
+        if (!f.IsD()) inFaces.push_back(&f);
+    if (vertexOrigin.size() != output.cm.vert.size() || faceOrigin.size() != output.cm.face.size())
+        throw fieldcvt::Error("the region's output does not match the new layer");
+    for (size_t i = 0; i < vertexOrigin.size(); ++i) {
+        if (vertexOrigin[i] < 0) continue;
+        const CVertexO& from = *inVerts[size_t(vertexOrigin[i])];
+        CVertexO& to = output.cm.vert[i];
+        if (keep.colour) to.C() = from.cC();
+        if (keep.quality) to.Q() = from.cQ();
+        if (keep.normals) to.N() = from.cN();
+    }
+    const bool faceColour = input.hasDataMask(MeshModel::MM_FACECOLOR);
+    const bool faceQuality = input.hasDataMask(MeshModel::MM_FACEQUALITY);
+    if (faceColour) output.updateDataMask(MeshModel::MM_FACECOLOR);
+    if (faceQuality) output.updateDataMask(MeshModel::MM_FACEQUALITY);
+    for (size_t i = 0; i < faceOrigin.size(); ++i) {
+        CFaceO& to = output.cm.face[i];
+        if (faceOrigin[i] < 0) {
+            to.SetS();
+            continue;
+        }
+        to.ClearS();
+        const CFaceO& from = *inFaces[size_t(faceOrigin[i])];
+        if (faceColour) to.C() = from.cC();
+        if (faceQuality) to.Q() = from.cQ();
+    }
+}
+
 }  // namespace fcvt_plugin

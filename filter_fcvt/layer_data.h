@@ -42,4 +42,14 @@ struct KeptData {
 void transferVertexData(const fieldcvt::TriMesh& in, const std::vector<const CVertexO*>& inVerts, const KeptData& keep,
                         CMeshO& out);
 
+//! The live faces' selection flags, in toTriMesh's order (face i = the i-th live face).
+std::vector<char> faceSelection(const CMeshO& cm);
+
+//! After "Remesh only selected faces" (vertexOrigin / faceOrigin: output element -> live input
+//! element, -1 for a new one; output element i = the i-th of `output`): the kept vertices'
+//! colour, quality and normal (as `keep` says) and the kept faces' colour and quality copied from
+//! the input exactly, and the selection set to the new faces.
+void keepRegionData(const MeshModel& input, const std::vector<int>& vertexOrigin, const std::vector<int>& faceOrigin,
+                    const KeptData& keep, MeshModel& output);
+
 }  // namespace fcvt_plugin

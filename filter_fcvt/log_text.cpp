@@ -42,6 +42,7 @@ constexpr ParameterLabel kParameterLabels[] = {
     {"repair", "Repair the input"},
     {"referenceLayer", "Reference layer (distances)"},
     {"maxCrosses", "Crosses drawn (at most)"},
+    {"selectedOnly", "Remesh only selected faces"},
     {"repair", "Repair the input"},
 };
 

@@ -131,7 +131,11 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* 
     MeshReadInfo& out = info ? *info : local;
     VertexAttributes localAttributes;
     VertexAttributes& attrs = attributes ? *attributes : localAttributes;
+    const std::string faceProperty = attrs.faceProperty;  // the one request the caller makes
     attrs = VertexAttributes{};
+    attrs.faceProperty = faceProperty;
+    if (!faceProperty.empty() && format != Format::Ply)
+        io_detail::fail(path, "face property " + quoteInput(faceProperty) + " can only be read from a PLY file");
     TriMesh mesh;
     switch (format) {
     case Format::Ply: mesh = io_detail::readPly(path, io_detail::readFileBytes(path), out, attrs); break;
@@ -140,6 +144,8 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* 
     case Format::Stl: mesh = io_detail::readStl(path, io_detail::readFileBytes(path), out); break;
     }
     checkResult(path, mesh);
+    if (!faceProperty.empty() && attrs.faceValues.size() != mesh.faces.size())
+        io_detail::fail(path, "face property " + quoteInput(faceProperty) + " not given for every face");
     for (auto* a : {&attrs.normals, &attrs.rosy})
         if (!a->empty() && a->size() != mesh.vertices.size()) {
             a->clear();  // e.g. several vertex elements, not all with the properties
@@ -163,6 +169,9 @@ void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttribu
         if (!a->empty() && a->size() != mesh.vertices.size())
             io_detail::fail(path, "vertex attribute count " + std::to_string(a->size()) + " does not match the " +
                                       std::to_string(mesh.vertexCount()) + " vertices");
+    if (!attrs.faceValues.empty() && attrs.faceValues.size() != mesh.faces.size())
+        io_detail::fail(path, "face value count " + std::to_string(attrs.faceValues.size()) + " does not match the " +
+                                  std::to_string(mesh.faceCount()) + " faces");
     switch (format) {
     case Format::Ply: io_detail::writePly(path, mesh, attrs); break;
     case Format::Obj: io_detail::writeObj(path, mesh, attrs); break;

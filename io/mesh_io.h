@@ -21,13 +21,20 @@ struct MeshReadInfo {
 struct VertexAttributes {
     std::vector<Vec3> normals;  //!< "nx ny nz"
     std::vector<Vec3> rosy;     //!< "rosy_x rosy_y rosy_z" (PLY only): the 6-RoSy field's representative
+    //! Reading: the name of a scalar PLY face property to read into faceValues (empty: none);
+    //! writing (PLY): the name faceValues is written under ("quality" when empty).
+    std::string faceProperty;
+    //! One value per triangle (a polygon's value on each of its triangles), e.g. MeshLab's face
+    //! quality; written as a float face property when not empty.
+    std::vector<double> faceValues;
 };
 
 //! Reads PLY/OBJ/OFF/STL by extension (case-insensitive). Throws IOError with one clear line
 //! for a missing, unreadable, truncated or malformed file, or one with no triangles.
 //! With `attributes`, a PLY file's per-vertex `nx ny nz` and `rosy_x rosy_y rosy_z` properties
 //! (all three of a group, scalar) fill `normals` and `rosy`, one per vertex; a group the file
-//! does not have (and every group, for other formats) is left empty.
+//! does not have (and every group, for other formats) is left empty. attributes->faceProperty
+//! names a face property to read (IOError if the file is not PLY or its faces lack it).
 TriMesh readMesh(const std::string& path, MeshReadInfo* info = nullptr, VertexAttributes* attributes = nullptr);
 
 //! Writes by extension (PLY binary, OBJ, OFF, STL). Throws IOError on failure.

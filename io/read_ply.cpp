@@ -118,7 +118,7 @@ private:
         while (pos_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[pos_]))) ++pos_;
         if (start == pos_) fail(path_, "truncated PLY file (unexpected end of data)");
         const std::string_view token(bytes_.data() + start, pos_ - start);
-        double value = 0;
+        double value = 0;  // of the current face
         if (!parseNumber(token, value))
             fail(path_, (isOutOfRange(token) ? "number out of range (not a finite double) " : "malformed number ") +
                             quoteInput(token) + " in the PLY data");
@@ -250,6 +250,19 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
             if (g.use) g.target->reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
         }
         if (isFace && indexList < 0) fail(path, "PLY faces lack a vertex_indices list");
+        // The face property asked for (attributes.faceProperty), a scalar.
+        int faceValue = -1;
+        if (isFace && !attributes.faceProperty.empty()) {
+            std::string names;
+            for (std::size_t i = 0; i < e.properties.size(); ++i) {
+                if (e.properties[i].countSize == 0 && e.properties[i].name == attributes.faceProperty) faceValue = int(i);
+                if (e.properties[i].countSize == 0) names += (names.empty() ? "" : ", ") + e.properties[i].name;
+            }
+            if (faceValue < 0)
+                fail(path, "PLY faces have no scalar property " + quoteInput(attributes.faceProperty) + " (they have: " +
+                               (names.empty() ? "none" : names) + ")");
+        }
+        double value = 0;  // of the current face
         if (isVertex) mesh.vertices.reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
         std::vector<int> polygon;
         // Without properties an element has no bytes: nothing to read, however many it claims.
@@ -260,6 +273,7 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                 const Property& p = e.properties[i];
                 if (p.countSize == 0) {
                     const double v = in.value(p.size, p.isFloat, p.isSigned);
+                    if (static_cast<int>(i) == faceValue) value = v;
                     for (int k = 0; k < 3; ++k) {
                         if (coordinate[k] == static_cast<int>(i)) xyz[k] = v;
                         for (int g = 0; g < 2; ++g)
@@ -283,6 +297,8 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                     fail(path, "face " + std::to_string(n) + " has " + std::to_string(polygon.size()) + " corners");
                 addPolygon(mesh, polygon, info);
             }
+            // The face's value on each of its triangles (the value may come before or after the list).
+            if (faceValue >= 0) attributes.faceValues.resize(mesh.faces.size(), value);
             if (isVertex) {
                 mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
                 for (int g = 0; g < 2; ++g)

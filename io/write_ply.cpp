@@ -37,7 +37,10 @@ void writePly(const std::string& path, const TriMesh& mesh, const VertexAttribut
     if (normals) out += "property float nx\nproperty float ny\nproperty float nz\n";
     if (rosy) out += "property float rosy_x\nproperty float rosy_y\nproperty float rosy_z\n";
     out += "element face " + std::to_string(mesh.faceCount()) + "\n";
-    out += "property list uchar int vertex_indices\nend_header\n";
+    out += "property list uchar int vertex_indices\n";
+    const bool faceValues = !attributes.faceValues.empty();
+    if (faceValues) out += "property float " + (attributes.faceProperty.empty() ? "quality" : attributes.faceProperty) + "\n";
+    out += "end_header\n";
     for (int v = 0; v < mesh.vertexCount(); ++v) {
         for (int k = 0; k < 3; ++k) put(out, mesh.vertices[v][k]);
         if (normals) putFloats(out, attributes.normals[v]);
@@ -46,6 +49,7 @@ void writePly(const std::string& path, const TriMesh& mesh, const VertexAttribut
     for (const Face& f : mesh.faces) {
         put(out, std::uint8_t{3});
         for (int k = 0; k < 3; ++k) put(out, std::int32_t{f[k]});
+        if (faceValues) put(out, static_cast<float>(attributes.faceValues[size_t(&f - mesh.faces.data())]));
     }
     writeFileBytes(path, out);
 }

@@ -136,3 +136,13 @@ set_tests_properties(cli_runtime_settings PROPERTIES LABELS "cli" TIMEOUT 300 RU
 add_test(NAME cli_wait_policy_chosen_by_user_kept
   COMMAND ${CMAKE_COMMAND} -E env OMP_WAIT_POLICY=ACTIVE OMP_DISPLAY_ENV=true $<TARGET_FILE:fcvt> --version)
 set_tests_properties(cli_wait_policy_chosen_by_user_kept PROPERTIES PASS_REGULAR_EXPRESSION "OMP_WAIT_POLICY = 'ACTIVE'")
+
+# Issue 34, remeshing a region: a disk of faces marked through a PLY face property (MeshLab's face
+# quality) on a sphere and on bunny; the rest identical bit for bit, the seam watertight, the
+# new faces' figures (theta_min >= 20 with the border's edges within about 2x of the target).
+add_test(NAME cli_region_sphere
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_region.py $<TARGET_FILE:fcvt> sphere 700
+          ${FCVT_CLI_WORK}/region_sphere 0.25 20 0.9 85)
+add_test(NAME cli_region_bunny
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_region.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/bunny.obj 3200
+          ${FCVT_CLI_WORK}/region_bunny 0.15 20 0.9 85)

@@ -33,6 +33,9 @@ add_test(NAME meshlab_field_torus
 add_test(NAME meshlab_field_scaled
   COMMAND bash "${_fcvt_ml_dir}/field_scaled.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/field_scaled")
+add_test(NAME meshlab_remesh_selected
+  COMMAND bash "${_fcvt_ml_dir}/remesh_selected.sh" "${PROJECT_SOURCE_DIR}"
+          "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/remesh_selected")
 add_test(NAME meshlab_missing_rosy
   COMMAND bash "${_fcvt_ml_dir}/missing_rosy.sh" "${PROJECT_SOURCE_DIR}"
           "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/missing_rosy")
@@ -72,6 +75,7 @@ if(TARGET fcvt)
 endif()
 set_tests_properties(meshlab_plugin_loads meshlab_remesh_torus meshlab_invalid_parameter
   meshlab_field_torus meshlab_field_scaled meshlab_missing_rosy meshlab_far_coordinates meshlab_field_then_remesh
+  meshlab_remesh_selected
   meshlab_colour_transfer
   meshlab_quality_report meshlab_compare_isotropic meshlab_invalid_new_parameters
   PROPERTIES LABELS meshlab TIMEOUT 600)

@@ -22,9 +22,9 @@ rm -rf "$work/out"; mkdir -p "$work/out"
 server="$(stage_meshlab "$work/stage" "$plugin")"
 shipped="$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx"
 old="$FCVT_SOURCE_DIR/tests/meshlab/fcvt-remesh-13params.mlx"
-# The parameters added after that script (gradation, repair): meshlabserver needs every one.
-added_lines="$(grep 'name="gradation"\|name="repair"' "$shipped")"
-[ "$(grep -c . <<<"$added_lines")" -eq 2 ] || fail "no gradation and repair in $shipped"
+# The parameters added after that script (gradation, repair, selectedOnly): meshlabserver needs every one.
+added_lines="$(grep 'name="gradation"\|name="repair"\|name="selectedOnly"' "$shipped")"
+[ "$(grep -c . <<<"$added_lines")" -eq 3 ] || fail "no gradation, repair and selectedOnly in $shipped"
 
 # filter_body MLX NAME=VALUE...: the <filter> element of MLX with those values.
 filter_body() {
