@@ -4,11 +4,13 @@
 #include "commands.h"
 #include "progress_printer.h"
 #include "report.h"
+#include "texture_files.h"
 
 #include "errors.h"
 #include "mesh_io.h"
 #include "metrics.h"
 #include "remesh.h"
+#include "texture_transfer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -76,6 +78,9 @@ void printUsage()
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
         "                        history, field singularities (looked for only then), valence\n"
         "                        optimisation, repair, warnings\n"
+        "  --no-texture          drop the input's texture coordinates (by default an input with them,\n"
+        "                        OBJ vt or PLY texcoord, gives an output with them, in the input's\n"
+        "                        atlas, when OUT is .obj or .ply; the .mtl is copied if OUT is elsewhere)\n"
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise); without --report, d_RMS and d_H are then\n"
         "                        not computed (nothing would show them)\n"
@@ -195,6 +200,43 @@ nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string
             {"notes", notes}};
 }
 
+std::string percentText(double share)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f %%", 100 * share);
+    return text;
+}
+
+//! The input's texture carried onto the output (empty when it has none or OUT cannot hold it),
+//! its material library and image references made to resolve from OUT's folder.
+TextureTransferResult outputTexture(const TriMesh& input, const MeshTexture& inputTexture, const RemeshResult& result,
+                                    const std::string& inPath, const std::string& outPath, std::vector<std::string>& warnings)
+{
+    if (inputTexture.empty()) return {};
+    if (!isPlyPath(outPath) && !isObjPath(outPath)) {
+        warnings.push_back(outPath + ": texture coordinates not written (only .obj and .ply hold them)");
+        return {};
+    }
+    TextureTransferParams params;
+    params.threads = result.threads;
+    TextureTransferResult texture = transferTexture(input, inputTexture, result.mesh, params);
+    lookUpMaterialImages(texture.texture, inPath, warnings);
+    placeTextureFiles(texture.texture, inPath, outPath);
+    return texture;
+}
+
+nlohmann::ordered_json textureJson(const MeshTexture& input, const TextureTransferResult& texture)
+{
+    nlohmann::ordered_json json = {{"input_has_texture", !input.empty()}, {"kept", !texture.texture.empty()}};
+    if (texture.texture.empty()) return json;
+    json["mode"] = "keep_atlas";
+    json["charts"] = texture.charts;
+    json["materials"] = texture.texture.materials.size();
+    json["continued_faces"] = texture.continuedFaces;
+    json["continued_share"] = texture.continuedShare;
+    return json;
+}
+
 }  // namespace
 
 int runRemesh(const std::vector<std::string>& args)
@@ -202,7 +244,7 @@ int runRemesh(const std::vector<std::string>& args)
     const Arguments a(args,
                       {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations",
                        "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation"},
-                      {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start"});
+                      {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start", "no-texture"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -230,7 +272,8 @@ int runRemesh(const std::vector<std::string>& args)
     const auto start = std::chrono::steady_clock::now();
     MeshReadInfo readInfo;
     VertexAttributes inputAttributes;
-    const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
+    MeshTexture inputTexture;
+    const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes, a.flag("no-texture") ? nullptr : &inputTexture);
     std::string sizeWarning;
     if (targetLength > 0) {
         try {
@@ -265,7 +308,10 @@ int runRemesh(const std::vector<std::string>& args)
         outputAttributes.normals = result.outputNormals;
         outputAttributes.rosy = result.outputDirections;
     }
-    writeMesh(outPath, result.mesh, writeField ? &outputAttributes : nullptr);
+    std::vector<std::string> textureWarnings;
+    const TextureTransferResult texture = outputTexture(input, inputTexture, result, inPath, outPath, textureWarnings);
+    writeMesh(outPath, result.mesh, writeField ? &outputAttributes : nullptr,
+              texture.texture.empty() ? nullptr : &texture.texture);
     const double writeSeconds = secondsSince(writeStart);
 
     // Warnings say that the output differs from what was asked (topology, parts, faces, vertex
@@ -275,19 +321,27 @@ int runRemesh(const std::vector<std::string>& args)
     for (const std::string& warning : readInfo.warnings) warnings.push_back(inPath + ": " + warning);
     if (!sizeWarning.empty()) warnings.push_back(sizeWarning);
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+    warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
     std::vector<std::string> notes;
     for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
     notes.insert(notes.end(), result.notes.begin(), result.notes.end());
+    if (!texture.texture.empty())
+        notes.push_back("texture kept in the input's atlas: " + std::to_string(texture.charts) + " charts, " +
+                        std::to_string(texture.continuedFaces) + " output faces (" + percentText(texture.continuedShare) +
+                        ") continued across a seam");
     // The output's topology and mean edge length are only printed or reported.
     const bool described = !quiet || a.has("report");
     const TopologySummary outputTopology = described ? computeTopology(result.mesh) : TopologySummary{};
     const double meanEdge = described ? meanEdgeLength(result.mesh) : 0.0;
     const double totalSeconds = secondsSince(start);
 
-    if (auto reportPath = a.text("report"))
-        writeJsonFile(*reportPath,
-                      remeshReport(inPath, outPath, params, targetLength, result,
-                                   {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes));
+    if (auto reportPath = a.text("report")) {
+        nlohmann::ordered_json report =
+            remeshReport(inPath, outPath, params, targetLength, result,
+                         {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes);
+        report["texture"] = textureJson(inputTexture, texture);
+        writeJsonFile(*reportPath, report);
+    }
 
     for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", escapeControlCharacters(w).c_str());
     if (!quiet) {

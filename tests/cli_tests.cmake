@@ -136,3 +136,15 @@ set_tests_properties(cli_runtime_settings PROPERTIES LABELS "cli" TIMEOUT 300 RU
 add_test(NAME cli_wait_policy_chosen_by_user_kept
   COMMAND ${CMAKE_COMMAND} -E env OMP_WAIT_POLICY=ACTIVE OMP_DISPLAY_ENV=true $<TARGET_FILE:fcvt> --version)
 set_tests_properties(cli_wait_policy_chosen_by_user_kept PROPERTIES PASS_REGULAR_EXPRESSION "OMP_WAIT_POLICY = 'ACTIVE'")
+
+# Issue 36: the texture kept in the input's atlas (resources/bunny10k_textured.obj: MeshLab's
+# sample, 190 charts) at 2000 vertices, written to another folder; and ../shared/textured/sub.obj
+# (one chart per triangle, when that folder is there) handled and its seam share reported.
+set(_fcvt_textured_shared "${PROJECT_SOURCE_DIR}/../shared/textured/sub.obj")
+if(NOT EXISTS "${_fcvt_textured_shared}")
+  set(_fcvt_textured_shared "")
+endif()
+add_test(NAME cli_texture_bunny_2000
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_texture.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/bunny10k_textured.obj
+          190 2000 ${FCVT_CLI_WORK}/texture ${_fcvt_textured_shared})
+set_tests_properties(cli_texture_bunny_2000 PROPERTIES LABELS "cli" TIMEOUT 600)

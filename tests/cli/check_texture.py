@@ -1,0 +1,118 @@
+"""fcvt remesh keeps the input's texture atlas (issue 36): per-corner texture coordinates on the
+output OBJ (one finite vt per corner, `f v/vt`), no face stretched across the atlas, the copied
+material library and its image resolving from the output's folder, the chart count and the share
+of seam-crossing faces in the report, MeshLab's PLY texcoord / TextureFile, --no-texture; and an
+atlas of one chart per triangle (sub.obj, when given) handled and reported.
+Usage: check_texture.py FCVT TEXTURED_OBJ CHARTS VERTICES WORK_DIR [ONE_CHART_PER_FACE_OBJ]"""
+import json
+import math
+import os
+import sys
+
+from fcvt_check import check, finish, run
+
+fcvt, textured, charts, vertices, work = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4], sys.argv[5]
+per_face = sys.argv[6] if len(sys.argv) > 6 else None
+os.makedirs(work, exist_ok=True)
+
+
+def read_obj(path):
+    """(vertices, vt, faces as [(v, vt)] * 3, mtllib names, usemtl count); negative indices resolved."""
+    v, vt, faces, libs, usemtl = [], [], [], [], 0
+    for line in open(path):
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "v":
+            v.append(tuple(float(x) for x in w[1:4]))
+        elif w[0] == "vt":
+            vt.append(tuple(float(x) for x in w[1:3]))
+        elif w[0] == "mtllib":
+            libs += w[1:]
+        elif w[0] == "usemtl":
+            usemtl += 1
+        elif w[0] == "f":
+            corners = []
+            for c in w[1:]:
+                p = c.split("/")
+                iv = int(p[0]); it = int(p[1]) if len(p) > 1 and p[1] else 0
+                corners.append((iv - 1 if iv > 0 else len(v) + iv, (it - 1 if it > 0 else len(vt) + it) if it else None))
+            for k in range(1, len(corners) - 1):
+                faces.append((corners[0], corners[k], corners[k + 1]))
+    return v, vt, faces, libs, usemtl
+
+
+def stretch(v, vt, face):
+    """UV perimeter / 3D perimeter of a face: large when its corners are in distant charts."""
+    uv = [vt[c[1]] for c in face]
+    p = [v[c[0]] for c in face]
+    return sum(math.dist(uv[k], uv[(k + 1) % 3]) for k in range(3)) / max(sum(math.dist(p[k], p[(k + 1) % 3]) for k in range(3)), 1e-300)
+
+
+def remesh(inp, out, *extra):
+    report = out + ".json"
+    code, _, err = run([fcvt, "remesh", inp, out, "--vertices", vertices, "--seed", "1", "--report", report, *extra])
+    check(code == 0, f"remesh {os.path.basename(inp)} -> {os.path.basename(out)} exit {code}: {err.strip()[-400:]}")
+    return json.load(open(report)) if code == 0 else {}, err
+
+
+iv, ivt, ifaces, ilibs, _ = read_obj(textured)
+input_stretch = sorted(stretch(iv, ivt, f) for f in ifaces)
+out_dir = os.path.join(work, "elsewhere")  # another folder than the input's: the .mtl must be copied
+os.makedirs(out_dir, exist_ok=True)
+out = os.path.join(out_dir, "out.obj")
+report, err = remesh(textured, out)
+ov, ovt, ofaces, olibs, ousemtl = read_obj(out)
+check(len(ofaces) > 0 and len(ovt) == 3 * len(ofaces), f"{len(ovt)} vt for {len(ofaces)} faces (one per corner expected)")
+check(all(c[1] is not None for f in ofaces for c in f), "every corner has a vt")
+check(len({c[1] for f in ofaces for c in f}) == 3 * len(ofaces), "each corner its own vt")
+check(all(math.isfinite(x) for t in ovt for x in t), "all vt finite")
+out_stretch = sorted(stretch(ov, ovt, f) for f in ofaces)
+bound = 2 * input_stretch[-1]
+worst = out_stretch[-1]
+print(f"stretch (UV / 3D perimeter): input median {input_stretch[len(input_stretch) // 2]:.4g} max {input_stretch[-1]:.4g}; "
+      f"output median {out_stretch[len(out_stretch) // 2]:.4g} max {worst:.4g}")
+check(worst <= bound, f"an output face spans the atlas: stretch {worst:.4g} > 2 x the input's largest {input_stretch[-1]:.4g}")
+tex = report.get("texture", {})
+check(tex.get("kept") is True and tex.get("charts") == charts, f"report texture {tex}, expected {charts} charts")
+share = tex.get("continued_share", -1)
+check(0 <= share < 0.5, f"seam-crossing share {share}")
+print(f"{os.path.basename(textured)} at {vertices} vertices: {tex.get('charts')} charts, "
+      f"{100 * share:.2f} % of output faces continued across a seam")
+check("continued across a seam" in err, "the seam figure is printed")
+# The material library was copied next to the output, and its image resolves from there.
+check(len(olibs) == len(ilibs) and all(os.path.isfile(os.path.join(out_dir, lib)) for lib in olibs), f"mtllib {olibs}")
+images = []
+for lib in olibs:
+    for line in open(os.path.join(out_dir, lib)):
+        if line.split()[:1] == ["map_Kd"]:
+            images.append(line.split()[-1])
+check(images and all(os.path.isfile(os.path.join(out_dir, i)) for i in images), f"images {images} resolve from {out_dir}")
+check(ousemtl >= 1, "usemtl written")
+
+# PLY: MeshLab's texcoord face list and the TextureFile comment, resolving as well.
+ply = os.path.join(out_dir, "out.ply")
+remesh(textured, ply)
+header = open(ply, "rb").read().split(b"end_header")[0].decode()
+check("property list uchar float texcoord" in header, "PLY texcoord list")
+files = [line.split(" ", 2)[2] for line in header.splitlines() if line.startswith("comment TextureFile ")]
+check(files and all(os.path.isfile(os.path.join(out_dir, f)) for f in files), f"TextureFile {files}")
+
+# --no-texture: no texture coordinates, nothing copied.
+plain = os.path.join(work, "plain.obj")
+remesh(textured, plain, "--no-texture")
+pv, pvt, pfaces, plibs, _ = read_obj(plain)
+check(not pvt and not plibs and len(pfaces) == len(ofaces), "--no-texture drops the texture, same faces")
+check([c[0] for f in pfaces for c in f] == [c[0] for f in ofaces for c in f], "--no-texture: same triangles")
+
+if per_face:
+    # One chart per triangle: every output face crosses seams; the atlas is kept, the share reported.
+    sub_out = os.path.join(work, "sub.obj")
+    sub_report, _ = remesh(per_face, sub_out)
+    sv, svt, sfaces, _, _ = read_obj(sub_out)
+    st = sub_report.get("texture", {})
+    check(len(svt) == 3 * len(sfaces) and all(math.isfinite(x) for t in svt for x in t), "sub: one finite vt per corner")
+    check(st.get("kept") is True and st.get("charts", 0) > 1000, f"sub report {st}")
+    print(f"{os.path.basename(per_face)} at {vertices} vertices: {st.get('charts')} charts, "
+          f"{100 * st.get('continued_share', -1):.2f} % of output faces continued across a seam")
+finish()
