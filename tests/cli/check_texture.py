@@ -105,6 +105,23 @@ pv, pvt, pfaces, plibs, _ = read_obj(plain)
 check(not pvt and not plibs and len(pfaces) == len(ofaces), "--no-texture drops the texture, same faces")
 check([c[0] for f in pfaces for c in f] == [c[0] for f in ofaces for c in f], "--no-texture: same triangles")
 
+# Broken coordinates: dropped with a warning, the mesh remeshed. A missing .mtl or image: a
+# warning, the coordinates kept (the image is never needed).
+lines = open(textured).read().splitlines(True)
+first_vt = next(i for i, line in enumerate(lines) if line.startswith("vt"))
+broken_dir = os.path.join(work, "broken")
+os.makedirs(broken_dir, exist_ok=True)
+broken = os.path.join(broken_dir, "nan.obj")
+open(broken, "w").write("".join(lines[:first_vt] + ["vt nan 0.5\n"] + lines[first_vt + 1:]))
+_, err = remesh(broken, os.path.join(work, "nan_out.obj"))
+_, nvt, nfaces, nlibs, _ = read_obj(os.path.join(work, "nan_out.obj"))
+check("texture coordinates dropped" in err and not nvt and len(nfaces) > 0, f"NaN vt: dropped with a warning ({err.strip()[-300:]})")
+alone = os.path.join(broken_dir, "alone.obj")  # no .mtl, no image next to it
+open(alone, "w").write("".join(lines))
+_, err = remesh(alone, os.path.join(work, "alone_out.obj"))
+_, avt, afaces, _, _ = read_obj(os.path.join(work, "alone_out.obj"))
+check("cannot be read" in err and len(avt) == 3 * len(afaces), f"missing .mtl: a warning, coordinates kept ({err.strip()[-300:]})")
+
 if per_face:
     # One chart per triangle: every output face crosses seams; the atlas is kept, the share reported.
     sub_out = os.path.join(work, "sub.obj")
