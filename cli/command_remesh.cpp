@@ -225,9 +225,13 @@ TextureTransferResult outputTexture(const TriMesh& input, const MeshTexture& inp
     return texture;
 }
 
-nlohmann::ordered_json textureJson(const MeshTexture& input, const TextureTransferResult& texture)
+//! The report's texture object; `input_has_texture` is null with --no-texture (not read then).
+nlohmann::ordered_json textureJson(const MeshTexture& input, bool dropped, const TextureTransferResult& texture)
 {
-    nlohmann::ordered_json json = {{"input_has_texture", !input.empty()}, {"kept", !texture.texture.empty()}};
+    nlohmann::ordered_json json = {
+        {"input_has_texture", dropped ? nlohmann::ordered_json() : nlohmann::ordered_json(!input.empty())},
+        {"no_texture_option", dropped},
+        {"kept", !texture.texture.empty()}};
     if (texture.texture.empty()) return json;
     json["mode"] = "keep_atlas";
     json["charts"] = texture.charts;
@@ -339,7 +343,7 @@ int runRemesh(const std::vector<std::string>& args)
         nlohmann::ordered_json report =
             remeshReport(inPath, outPath, params, targetLength, result,
                          {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes);
-        report["texture"] = textureJson(inputTexture, texture);
+        report["texture"] = textureJson(inputTexture, a.flag("no-texture"), texture);
         writeJsonFile(*reportPath, report);
     }
 

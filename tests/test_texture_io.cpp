@@ -153,6 +153,19 @@ TEST_F(TextureIoTest, MeshLabPlyTexcoordAndTextureFiles)
     EXPECT_NE(info.warnings[0].find("texnumber 7 out of range"), std::string::npos) << info.warnings[0];
 }
 
+TEST_F(TextureIoTest, ObjWithNormalsAndTexture)
+{
+    MeshTexture t;
+    const TriMesh m = readMesh(write("t.obj", kTexturedObj), nullptr, nullptr, &t);
+    VertexAttributes attributes;
+    attributes.normals.assign(m.vertices.size(), Vec3(0, 0, 1));
+    writeMesh(path("n.obj"), m, &attributes, &t);
+    EXPECT_NE(bytes(path("n.obj")).find("\nf 1/1/1 2/2/2 3/3/3\n"), std::string::npos);
+    MeshTexture back;
+    EXPECT_EQ(readMesh(path("n.obj"), nullptr, nullptr, &back).faces, m.faces);
+    EXPECT_EQ(back.uv, t.uv);
+}
+
 TEST_F(TextureIoTest, UntexturedFilesAreWrittenAsBefore)
 {
     MeshTexture t;

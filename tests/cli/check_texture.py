@@ -153,6 +153,12 @@ for lib in olibs:
 check(images and all(os.path.isfile(os.path.join(out_dir, i)) for i in images), f"images {images} resolve from {out_dir}")
 check(ousemtl >= 1, "usemtl written")
 
+# The same bytes on 1 and 3 threads.
+remesh(textured, os.path.join(out_dir, "threads1.obj"), "--threads", "1")
+remesh(textured, os.path.join(out_dir, "threads3.obj"), "--threads", "3")
+check(open(os.path.join(out_dir, "threads1.obj"), "rb").read() == open(os.path.join(out_dir, "threads3.obj"), "rb").read(),
+      "same output on 1 and 3 threads")
+
 # PLY: MeshLab's texcoord face list and the TextureFile comment, resolving as well.
 ply = os.path.join(out_dir, "out.ply")
 remesh(textured, ply)
@@ -163,7 +169,8 @@ check(files and all(os.path.isfile(os.path.join(out_dir, f)) for f in files), f"
 
 # --no-texture: no texture coordinates, nothing copied.
 plain = os.path.join(work, "plain.obj")
-remesh(textured, plain, "--no-texture")
+plain_report, _ = remesh(textured, plain, "--no-texture")
+check(plain_report.get("texture", {}).get("kept") is False, f"--no-texture report {plain_report.get('texture')}")
 pv, pvt, pfaces, plibs, _ = read_obj(plain)
 check(not pvt and not plibs and len(pfaces) == len(ofaces), "--no-texture drops the texture, same faces")
 check([c[0] for f in pfaces for c in f] == [c[0] for f in ofaces for c in f], "--no-texture: same triangles")
