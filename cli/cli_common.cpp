@@ -115,6 +115,13 @@ bool isPlyPath(const std::string& path)
     return ext == ".ply";
 }
 
+bool isObjPath(const std::string& path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".obj";
+}
+
 const std::vector<Vec3>& userField(const std::string& path, const VertexAttributes& attributes)
 {
     if (attributes.rosy.empty())

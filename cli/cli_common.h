@@ -39,6 +39,8 @@ void checkOptions(const RemeshParams& params);
 
 //! True when the path ends in .ply (any case).
 bool isPlyPath(const std::string& path);
+//! True if the path ends in .obj (any case).
+bool isObjPath(const std::string& path);
 
 //! The `rosy_x rosy_y rosy_z` vectors read with `path`, checked: present for every vertex and
 //! finite (IOError naming the file otherwise, saying that --field user needs them).

@@ -4,12 +4,14 @@
 #include "commands.h"
 #include "progress_printer.h"
 #include "report.h"
+#include "texture_files.h"
 
 #include "errors.h"
 #include "mesh_io.h"
 #include "metrics.h"
 #include "region.h"
 #include "remesh.h"
+#include "texture_transfer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -89,6 +91,9 @@ void printUsage()
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
         "                        history, field singularities (looked for only then), valence\n"
         "                        optimisation, repair, warnings\n"
+        "  --no-texture          drop the input's texture coordinates (by default an input with them,\n"
+        "                        OBJ vt or PLY texcoord, gives an output with them, in the input's\n"
+        "                        atlas, when OUT is .obj or .ply; the .mtl is copied if OUT is elsewhere)\n"
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise); without --report, d_RMS and d_H are then\n"
         "                        not computed (nothing would show them)\n"
@@ -230,9 +235,10 @@ nlohmann::ordered_json regionJson(const std::string& property, const RegionRemes
 
 //! Writes OUT: a PLY gets the field at its vertices when one was used and, with --region (a
 //! non-empty `regionProperty`), that property back: 1 on the new faces, the input's value on the
-//! kept ones (not when everything was selected: then the output is the plain remesh's).
+//! kept ones (not when everything was selected: then the output is the plain remesh's); a
+//! non-null `texture` its per-corner coordinates (outputTexture).
 void writeOutput(const std::string& outPath, const RegionRemeshResult& run, const std::string& regionProperty,
-                 const VertexAttributes& inputAttributes)
+                 const VertexAttributes& inputAttributes, const MeshTexture* texture)
 {
     const RemeshResult& result = run.result;
     VertexAttributes outputAttributes;
@@ -249,7 +255,7 @@ void writeOutput(const std::string& outPath, const RegionRemeshResult& run, cons
         for (int origin : run.faceOrigin)
             outputAttributes.faceValues.push_back(origin < 0 ? 1.0 : inputAttributes.faceValues[size_t(origin)]);
     }
-    writeMesh(outPath, result.mesh, writeField || writeRegion ? &outputAttributes : nullptr);
+    writeMesh(outPath, result.mesh, writeField || writeRegion ? &outputAttributes : nullptr, texture);
 }
 
 //! The summary's second line with --region.
@@ -284,6 +290,48 @@ std::vector<char> regionFromProperty(const std::string& path, const std::string&
     return selected;
 }
 
+std::string percentText(double share)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f %%", 100 * share);
+    return text;
+}
+
+//! The input's texture carried onto the output (empty when it has none or OUT cannot hold it),
+//! its material library and image references made to resolve from OUT's folder.
+TextureTransferResult outputTexture(const TriMesh& input, const MeshTexture& inputTexture, const RemeshResult& result,
+                                    const std::string& inPath, const std::string& outPath, std::vector<std::string>& warnings)
+{
+    if (inputTexture.empty()) return {};
+    if (!isPlyPath(outPath) && !isObjPath(outPath)) {
+        warnings.push_back(outPath + ": texture coordinates not written (only .obj and .ply hold them)");
+        return {};
+    }
+    TextureTransferParams params;
+    params.threads = result.threads;
+    TextureTransferResult texture = transferTexture(input, inputTexture, result.mesh, params);
+    lookUpMaterialImages(texture.texture, inPath, warnings);
+    placeTextureFiles(texture.texture, inPath, outPath);
+    return texture;
+}
+
+//! The report's texture object; `input_has_texture` is null with --no-texture (not read then).
+nlohmann::ordered_json textureJson(const MeshTexture& input, bool dropped, const TextureTransferResult& texture, double seconds)
+{
+    nlohmann::ordered_json json = {
+        {"input_has_texture", dropped ? nlohmann::ordered_json() : nlohmann::ordered_json(!input.empty())},
+        {"no_texture_option", dropped},
+        {"kept", !texture.texture.empty()}};
+    if (texture.texture.empty()) return json;
+    json["mode"] = "keep_atlas";
+    json["charts"] = texture.charts;
+    json["materials"] = texture.texture.materials.size();
+    json["continued_faces"] = texture.continuedFaces;
+    json["continued_share"] = texture.continuedShare;
+    json["time_s"] = seconds;  // part of the write time: the transfer and the material files
+    return json;
+}
+
 }  // namespace
 
 int runRemesh(const std::vector<std::string>& args)
@@ -291,7 +339,7 @@ int runRemesh(const std::vector<std::string>& args)
     const Arguments a(args,
                       {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations",
                        "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region"},
-                      {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start"});
+                      {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start", "no-texture"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -324,7 +372,8 @@ int runRemesh(const std::vector<std::string>& args)
     MeshReadInfo readInfo;
     VertexAttributes inputAttributes;
     if (region) inputAttributes.faceProperty = *region;
-    const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes);
+    MeshTexture inputTexture;
+    const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes, a.flag("no-texture") ? nullptr : &inputTexture);
     const std::vector<char> selected = region ? regionFromProperty(inPath, *region, inputAttributes) : std::vector<char>{};
     std::string sizeWarning;
     if (targetLength > 0) {
@@ -357,7 +406,14 @@ int runRemesh(const std::vector<std::string>& args)
 
     const auto writeStart = std::chrono::steady_clock::now();
     const std::string regionProperty = region ? *region : std::string();
-    writeOutput(outPath, regionRun, regionProperty, inputAttributes);
+    std::vector<std::string> textureWarnings;
+    TextureTransferResult texture;
+    if (region && !inputTexture.empty())
+        textureWarnings.push_back("texture coordinates are not carried with --region: the output has none");
+    else
+        texture = outputTexture(input, inputTexture, result, inPath, outPath, textureWarnings);
+    const double textureSeconds = secondsSince(writeStart);
+    writeOutput(outPath, regionRun, regionProperty, inputAttributes, texture.texture.empty() ? nullptr : &texture.texture);
     const double writeSeconds = secondsSince(writeStart);
 
     // Warnings say that the output differs from what was asked (topology, parts, faces, vertex
@@ -367,20 +423,28 @@ int runRemesh(const std::vector<std::string>& args)
     for (const std::string& warning : readInfo.warnings) warnings.push_back(inPath + ": " + warning);
     if (!sizeWarning.empty()) warnings.push_back(sizeWarning);
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+    warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
     std::vector<std::string> notes;
     for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
     notes.insert(notes.end(), result.notes.begin(), result.notes.end());
+    if (!texture.texture.empty())
+        notes.push_back("texture kept in the input's atlas: " + std::to_string(texture.charts) + " charts, " +
+                        std::to_string(texture.continuedFaces) + " output faces (" + percentText(texture.continuedShare) +
+                        ") continued across a seam");
     // The output's topology and mean edge length are only printed or reported.
     const bool described = !quiet || a.has("report");
     const TopologySummary outputTopology = described ? computeTopology(result.mesh) : TopologySummary{};
     const double meanEdge = described ? meanEdgeLength(result.mesh) : 0.0;
     const double totalSeconds = secondsSince(start);
 
-    if (auto reportPath = a.text("report"))
-        writeJsonFile(*reportPath,
-                      remeshReport(inPath, outPath, params, targetLength, result,
-                                   {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes,
-                                   region ? regionJson(*region, regionRun) : nlohmann::ordered_json(nullptr)));
+    if (auto reportPath = a.text("report")) {
+        nlohmann::ordered_json report =
+            remeshReport(inPath, outPath, params, targetLength, result,
+                         {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes,
+                         region ? regionJson(*region, regionRun) : nlohmann::ordered_json(nullptr));
+        report["texture"] = textureJson(inputTexture, a.flag("no-texture"), texture, textureSeconds);
+        writeJsonFile(*reportPath, report);
+    }
 
     for (const std::string& w : warnings) std::fprintf(stderr, "fcvt: warning: %s\n", escapeControlCharacters(w).c_str());
     if (!quiet) {

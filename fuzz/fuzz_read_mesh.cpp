@@ -35,10 +35,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     try {
         fieldcvt::MeshReadInfo info;
-        const fieldcvt::TriMesh mesh = fieldcvt::readMesh(path, &info);
+        fieldcvt::MeshTexture texture;  // the texture readers too, on every other input
+        const bool textured = (data[0] / 8) % 2 == 1;
+        const fieldcvt::TriMesh mesh = fieldcvt::readMesh(path, &info, nullptr, textured ? &texture : nullptr);
         for (const fieldcvt::Face& t : mesh.faces)
             for (int c : t)
                 if (c < 0 || c >= mesh.vertexCount()) __builtin_trap();  // readMesh promised valid indices
+        if (!texture.empty() && !fieldcvt::textureProblem(mesh, texture).empty()) __builtin_trap();  // and a fitting texture
     } catch (const fieldcvt::Error&) {
         // A clear refusal: the documented outcome for a bad file.
     }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +53,19 @@ void addPolygon(TriMesh& mesh, const std::vector<int>& polygon, MeshReadInfo& in
 {
     if (triangulatePolygon(mesh.vertices, polygon, mesh.faces) == PolygonShape::NotSimple) ++info.polygonsNotSimple;
     if (polygon.size() > 3) ++info.polygonsTriangulated;
+}
+
+void appendCornerTexture(const TriMesh& mesh, std::size_t firstFace, const std::vector<int>& polygon,
+                         const std::vector<Vec2>& polygonUv, int material, MeshTexture& texture)
+{
+    for (std::size_t f = firstFace; f < mesh.faces.size(); ++f) {
+        for (int v : mesh.faces[f]) {
+            // A triangle of the polygon's triangulation: its corner's coordinates by position.
+            const auto j = static_cast<std::size_t>(std::find(polygon.begin(), polygon.end(), v) - polygon.begin());
+            texture.uv.push_back(j < polygonUv.size() ? polygonUv[j] : Vec2(NAN, NAN));
+        }
+        texture.faceMaterial.push_back(material);
+    }
 }
 
 void writeFileBytes(const std::string& path, const std::string& bytes)
@@ -123,7 +137,7 @@ void checkResult(const std::string& path, const TriMesh& mesh)
 
 void checkMeshExtension(const std::string& path) { formatOf(path); }
 
-TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* attributes)
+TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* attributes, MeshTexture* texture)
 {
     const Format format = formatOf(path);
     checkReadable(path);
@@ -136,16 +150,23 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* 
     attrs.faceProperty = faceProperty;
     if (!faceProperty.empty() && format != Format::Ply)
         io_detail::fail(path, "face property " + quoteInput(faceProperty) + " can only be read from a PLY file");
+    if (texture) *texture = MeshTexture{};
     TriMesh mesh;
     switch (format) {
-    case Format::Ply: mesh = io_detail::readPly(path, io_detail::readFileBytes(path), out, attrs); break;
-    case Format::Obj: mesh = io_detail::readObj(path, io_detail::readFileBytes(path), out); break;
+    case Format::Ply: mesh = io_detail::readPly(path, io_detail::readFileBytes(path), out, attrs, texture); break;
+    case Format::Obj: mesh = io_detail::readObj(path, io_detail::readFileBytes(path), out, texture); break;
     case Format::Off: mesh = io_detail::readOff(path, io_detail::readFileBytes(path), out); break;
     case Format::Stl: mesh = io_detail::readStl(path, io_detail::readFileBytes(path), out); break;
     }
     checkResult(path, mesh);
     if (!faceProperty.empty() && attrs.faceValues.size() != mesh.faces.size())
         io_detail::fail(path, "face property " + quoteInput(faceProperty) + " not given for every face");
+    if (texture && !texture->empty()) {
+        if (const std::string problem = textureProblem(mesh, *texture); !problem.empty()) {
+            out.warnings.push_back("texture coordinates dropped: " + problem);
+            *texture = MeshTexture{};
+        }
+    }
     for (auto* a : {&attrs.normals, &attrs.rosy})
         if (!a->empty() && a->size() != mesh.vertices.size()) {
             a->clear();  // e.g. several vertex elements, not all with the properties
@@ -160,8 +181,12 @@ TriMesh readMesh(const std::string& path, MeshReadInfo* info, VertexAttributes* 
     return mesh;
 }
 
-void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttributes* attributes)
+void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttributes* attributes, const MeshTexture* texture)
 {
+    const MeshTexture noTexture;
+    const MeshTexture& tex = texture ? *texture : noTexture;
+    if (!tex.empty())
+        if (const std::string problem = textureProblem(mesh, tex); !problem.empty()) io_detail::fail(path, problem);
     const Format format = formatOf(path);
     const VertexAttributes none;
     const VertexAttributes& attrs = attributes ? *attributes : none;
@@ -173,8 +198,8 @@ void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttribu
         io_detail::fail(path, "face value count " + std::to_string(attrs.faceValues.size()) + " does not match the " +
                                   std::to_string(mesh.faceCount()) + " faces");
     switch (format) {
-    case Format::Ply: io_detail::writePly(path, mesh, attrs); break;
-    case Format::Obj: io_detail::writeObj(path, mesh, attrs); break;
+    case Format::Ply: io_detail::writePly(path, mesh, attrs, tex); break;
+    case Format::Obj: io_detail::writeObj(path, mesh, attrs, tex); break;
     case Format::Off: io_detail::writeOff(path, mesh); break;
     case Format::Stl: io_detail::writeStl(path, mesh); break;
     }

@@ -133,7 +133,8 @@ private:
 
 //! Parses the header, line by line up to the one that is "end_header" (the words may occur in
 //! a comment); returns the offset of the body.
-std::size_t parseHeader(const std::string& path, const std::string& bytes, Encoding& encoding, std::vector<Element>& elements)
+std::size_t parseHeader(const std::string& path, const std::string& bytes, Encoding& encoding, std::vector<Element>& elements,
+                        std::vector<std::string>& textureFiles)
 {
     std::size_t pos = byteOrderMarkLength(bytes);
     auto notPly = [&] { fail(path, "not a PLY file (no 'ply' ... 'end_header' header)"); };
@@ -149,6 +150,13 @@ std::size_t parseHeader(const std::string& path, const std::string& bytes, Encod
         words >> keyword;
         if (keyword == "end_header") {
             ended = true;
+            continue;
+        }
+        if (std::string word; keyword == "comment" && words >> word && word == "TextureFile") {
+            // MeshLab's texture image name: the rest of the line (it may hold spaces).
+            std::string name;
+            std::getline(words >> std::ws, name);
+            textureFiles.push_back(name.substr(0, name.find_last_not_of("\r \t") + 1));
             continue;
         }
         auto bad = [&] {
@@ -198,13 +206,66 @@ std::size_t parseHeader(const std::string& path, const std::string& bytes, Encod
     return pos;
 }
 
+//! MeshLab's per-face texture coordinates (`property list uchar float texcoord`, 2 per corner) and
+//! texture index (`texnumber`, into the `TextureFile` comments), read alongside the faces; the
+//! first inconsistency makes them all dropped (the geometry stays).
+class PlyTexture {
+public:
+    PlyTexture(MeshTexture* target, const std::vector<std::string>& files) : target_(target)
+    {
+        if (!target_) return;
+        for (const std::string& file : files) target_->materials.push_back({"", file});
+        if (files.empty()) target_->materials.push_back({"", ""});
+    }
+    bool active() const { return target_ != nullptr; }
+    //! Faces from `firstFace` on came from face element row `row` (`polygon`, `coordinates`, `texnumber`).
+    void addFaces(const TriMesh& mesh, std::size_t firstFace, const std::vector<int>& polygon,
+                  const std::vector<double>& coordinates, double texnumber, long long row)
+    {
+        if (!target_ || firstFace == mesh.faces.size()) return;
+        uv_.clear();
+        if (coordinates.size() == 2 * polygon.size())
+            for (std::size_t j = 0; j < polygon.size(); ++j) uv_.emplace_back(coordinates[2 * j], coordinates[2 * j + 1]);
+        else
+            problem(row,
+                    std::to_string(coordinates.size()) + " texcoord values for " + std::to_string(polygon.size()) + " corners");
+        textured_ |= !coordinates.empty();
+        const int materials = static_cast<int>(target_->materials.size());
+        if (!(texnumber >= 0 && texnumber < materials && texnumber == std::floor(texnumber))) {
+            problem(row, "texnumber " + indexText(texnumber) + " out of range (" + std::to_string(materials) + " textures)");
+            texnumber = 0;
+        }
+        appendCornerTexture(mesh, firstFace, polygon, uv_, static_cast<int>(texnumber), *target_);
+    }
+    void finish(MeshReadInfo& info)
+    {
+        if (!target_) return;
+        if (textured_ && !problem_.empty()) info.warnings.push_back("texture coordinates dropped: " + problem_);
+        if (!textured_ || !problem_.empty()) *target_ = MeshTexture{};
+    }
+
+private:
+    void problem(long long row, const std::string& what)
+    {
+        if (problem_.empty()) problem_ = "face " + std::to_string(row) + ": " + what;
+    }
+
+    MeshTexture* target_;
+    std::vector<Vec2> uv_;
+    bool textured_ = false;
+    std::string problem_;
+};
+
 }  // namespace
 
-TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info, VertexAttributes& attributes)
+TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info, VertexAttributes& attributes,
+                MeshTexture* texture)
 {
     Encoding encoding = Encoding::Ascii;
     std::vector<Element> elements;
-    const std::size_t body = parseHeader(path, bytes, encoding, elements);
+    std::vector<std::string> textureFiles;
+    const std::size_t body = parseHeader(path, bytes, encoding, elements, textureFiles);
+    PlyTexture plyTexture(texture, textureFiles);
     BodyReader in(path, bytes, body, encoding);
     TriMesh mesh;
     // Every element takes at least one byte per property: a lying count fails at the end of the
@@ -214,9 +275,11 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
         const bool isVertex = e.name == "vertex", isFace = e.name == "face";
         if ((isVertex || isFace) && e.count > std::numeric_limits<int>::max()) fail(path, "too many " + e.name + " elements");
         int coordinate[3] = {-1, -1, -1};
-        int indexList = -1;
+        int indexList = -1, texcoordList = -1, texnumber = -1;
         for (std::size_t i = 0; i < e.properties.size(); ++i) {
             const Property& p = e.properties[i];
+            if (isFace && p.name == (p.countSize > 0 ? "texcoord" : "texnumber"))
+                (p.countSize > 0 ? texcoordList : texnumber) = static_cast<int>(i);
             for (int k = 0; k < 3; ++k)
                 if (isVertex && p.countSize == 0 && p.name == std::string(1, "xyz"[k])) coordinate[k] = static_cast<int>(i);
             if (isFace && p.countSize > 0 && !p.isFloat && (p.name == "vertex_indices" || p.name == "vertex_index"))
@@ -265,15 +328,18 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
         double value = 0;  // of the current face
         if (isVertex) mesh.vertices.reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
         std::vector<int> polygon;
+        std::vector<double> texcoords;
         // Without properties an element has no bytes: nothing to read, however many it claims.
         for (long long n = 0; n < e.count && !e.properties.empty(); ++n) {
-            double xyz[3] = {0, 0, 0};
+            double xyz[3] = {0, 0, 0}, textureIndex = 0;
+            const std::size_t firstFace = mesh.faces.size();
             Vec3 groupValue[2] = {Vec3::Zero(), Vec3::Zero()};
             for (std::size_t i = 0; i < e.properties.size(); ++i) {
                 const Property& p = e.properties[i];
                 if (p.countSize == 0) {
                     const double v = in.value(p.size, p.isFloat, p.isSigned);
                     if (static_cast<int>(i) == faceValue) value = v;
+                    if (texnumber == static_cast<int>(i)) textureIndex = v;
                     for (int k = 0; k < 3; ++k) {
                         if (coordinate[k] == static_cast<int>(i)) xyz[k] = v;
                         for (int g = 0; g < 2; ++g)
@@ -283,9 +349,11 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
                 }
                 const double items = in.value(p.countSize, false, p.countSigned);
                 if (!(items >= 0) || items > capacity) fail(path, "invalid list length in PLY element " + quoteInput(e.name));
-                polygon.clear();
+                if (static_cast<int>(i) == indexList) polygon.clear();
+                if (static_cast<int>(i) == texcoordList) texcoords.clear();
                 for (long long j = 0; j < static_cast<long long>(items); ++j) {
                     const double v = in.value(p.size, p.isFloat, p.isSigned);
+                    if (static_cast<int>(i) == texcoordList) texcoords.push_back(v);
                     if (static_cast<int>(i) != indexList) continue;
                     if (!(v >= 0) || v >= mesh.vertexCount() || v != static_cast<int>(v))
                         fail(path, "face " + std::to_string(n) + " has vertex index " + indexText(v) + " out of range (" +
@@ -299,6 +367,7 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
             }
             // The face's value on each of its triangles (the value may come before or after the list).
             if (faceValue >= 0) attributes.faceValues.resize(mesh.faces.size(), value);
+            if (isFace && texcoordList >= 0) plyTexture.addFaces(mesh, firstFace, polygon, texcoords, textureIndex, n);
             if (isVertex) {
                 mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
                 for (int g = 0; g < 2; ++g)
@@ -306,6 +375,7 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
             }
         }
     }
+    plyTexture.finish(info);
     // Never dropped unsaid: e.g. faces beyond the count the header declares.
     if (const std::string rest = in.leftover(); !rest.empty()) {
         std::string declared;
