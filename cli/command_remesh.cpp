@@ -262,12 +262,13 @@ void writeOutput(const std::string& outPath, const RegionRemeshResult& run, cons
 void printRegionLine(const RegionRemeshResult& run)
 {
     const auto isNew = [](int origin) { return origin < 0; };
-    std::printf("region: %d piece%s (%d kept as %s), %ld new vertices, %ld new faces, %d border vertices kept; the "
-                "figures above are the new faces' (away from the border: theta_min %.1f deg, Q_avg %.3f)\n",
-                run.regions, run.regions == 1 ? "" : "s", run.keptRegions, run.keptRegions == 1 ? "it was" : "they were",
-                long(std::count_if(run.vertexOrigin.begin(), run.vertexOrigin.end(), isNew)),
-                long(std::count_if(run.faceOrigin.begin(), run.faceOrigin.end(), isNew)), run.borderVertices,
-                run.interiorMetrics.thetaMin, run.interiorMetrics.qAvg);
+    std::printf(
+        "region: %d piece%s (%d kept as %s), %ld new vertices, %ld new faces, %d border vertices kept; the "
+        "figures above are the new faces' (away from the border: theta_min %.1f deg, Q_avg %.3f)\n",
+        run.regions, run.regions == 1 ? "" : "s", run.keptRegions, run.keptRegions == 1 ? "it was" : "they were",
+        long(std::count_if(run.vertexOrigin.begin(), run.vertexOrigin.end(), isNew)),
+        long(std::count_if(run.faceOrigin.begin(), run.faceOrigin.end(), isNew)), run.borderVertices,
+        run.interiorMetrics.thetaMin, run.interiorMetrics.qAvg);
 }
 
 //! The area --target-length applies to: the region's with --region (`selected` not empty).
@@ -283,7 +284,8 @@ double sizedArea(const TriMesh& input, const std::vector<char>& selected)
 std::vector<char> regionFromProperty(const std::string& path, const std::string& property, const VertexAttributes& attributes)
 {
     std::vector<char> selected(attributes.faceValues.size(), 0);
-    for (size_t f = 0; f < selected.size(); ++f) selected[f] = attributes.faceValues[f] != 0 && !std::isnan(attributes.faceValues[f]);
+    for (size_t f = 0; f < selected.size(); ++f)
+        selected[f] = attributes.faceValues[f] != 0 && !std::isnan(attributes.faceValues[f]);
     if (std::none_of(selected.begin(), selected.end(), [](char c) { return c != 0; }))
         throw InvalidInputError(path + ": the region is empty: no face has a non-zero " + quoteInput(property) +
                                 " (mark the faces to remesh first; see fcvt remesh --help)");
@@ -313,6 +315,27 @@ TextureTransferResult outputTexture(const TriMesh& input, const MeshTexture& inp
     lookUpMaterialImages(texture.texture, inPath, warnings);
     placeTextureFiles(texture.texture, inPath, outPath);
     return texture;
+}
+
+//! --region does not carry texture coordinates (yet): a warning when the input had some.
+TextureTransferResult noTextureWithRegion(const MeshTexture& inputTexture, std::vector<std::string>& warnings)
+{
+    if (!inputTexture.empty()) warnings.push_back("texture coordinates are not carried with --region: the output has none");
+    return {};
+}
+
+//! The run's information lines: the reader's, the core's, the texture's.
+std::vector<std::string> runNotes(const std::string& inPath, const MeshReadInfo& readInfo, const RemeshResult& result,
+                                  const TextureTransferResult& texture)
+{
+    std::vector<std::string> notes;
+    for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
+    notes.insert(notes.end(), result.notes.begin(), result.notes.end());
+    if (!texture.texture.empty())
+        notes.push_back("texture kept in the input's atlas: " + std::to_string(texture.charts) + " charts, " +
+                        std::to_string(texture.continuedFaces) + " output faces (" + percentText(texture.continuedShare) +
+                        ") continued across a seam");
+    return notes;
 }
 
 //! The report's texture object; `input_has_texture` is null with --no-texture (not read then).
@@ -360,8 +383,10 @@ int runRemesh(const std::vector<std::string>& args)
                          " is not a .ply file");
     const auto region = a.text("region");
     if (region && (region->empty() || !isPlyPath(inPath)))
-        throw UsageError("--region takes the region from a face property of a PLY input: it needs a property name and a "
-                         ".ply IN" + (isPlyPath(inPath) ? std::string() : " (" + inPath + " is not a .ply file)"));
+        throw UsageError(
+            "--region takes the region from a face property of a PLY input: it needs a property name and a "
+            ".ply IN" +
+            (isPlyPath(inPath) ? std::string() : " (" + inPath + " is not a .ply file)"));
     checkOutputPath(outPath, inPath);
     if (const auto reportPath = a.text("report")) {
         checkDistinctOutputs(*reportPath, outPath, "output mesh");
@@ -407,11 +432,8 @@ int runRemesh(const std::vector<std::string>& args)
     const auto writeStart = std::chrono::steady_clock::now();
     const std::string regionProperty = region ? *region : std::string();
     std::vector<std::string> textureWarnings;
-    TextureTransferResult texture;
-    if (region && !inputTexture.empty())
-        textureWarnings.push_back("texture coordinates are not carried with --region: the output has none");
-    else
-        texture = outputTexture(input, inputTexture, result, inPath, outPath, textureWarnings);
+    const TextureTransferResult texture = region ? noTextureWithRegion(inputTexture, textureWarnings)
+                                                 : outputTexture(input, inputTexture, result, inPath, outPath, textureWarnings);
     const double textureSeconds = secondsSince(writeStart);
     writeOutput(outPath, regionRun, regionProperty, inputAttributes, texture.texture.empty() ? nullptr : &texture.texture);
     const double writeSeconds = secondsSince(writeStart);
@@ -424,13 +446,7 @@ int runRemesh(const std::vector<std::string>& args)
     if (!sizeWarning.empty()) warnings.push_back(sizeWarning);
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
     warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
-    std::vector<std::string> notes;
-    for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
-    notes.insert(notes.end(), result.notes.begin(), result.notes.end());
-    if (!texture.texture.empty())
-        notes.push_back("texture kept in the input's atlas: " + std::to_string(texture.charts) + " charts, " +
-                        std::to_string(texture.continuedFaces) + " output faces (" + percentText(texture.continuedShare) +
-                        ") continued across a seam");
+    const std::vector<std::string> notes = runNotes(inPath, readInfo, result, texture);
     // The output's topology and mean edge length are only printed or reported.
     const bool described = !quiet || a.has("report");
     const TopologySummary outputTopology = described ? computeTopology(result.mesh) : TopologySummary{};
@@ -438,10 +454,9 @@ int runRemesh(const std::vector<std::string>& args)
     const double totalSeconds = secondsSince(start);
 
     if (auto reportPath = a.text("report")) {
-        nlohmann::ordered_json report =
-            remeshReport(inPath, outPath, params, targetLength, result,
-                         {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology}, warnings, notes,
-                         region ? regionJson(*region, regionRun) : nlohmann::ordered_json(nullptr));
+        nlohmann::ordered_json report = remeshReport(
+            inPath, outPath, params, targetLength, result, {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology},
+            warnings, notes, region ? regionJson(*region, regionRun) : nlohmann::ordered_json(nullptr));
         report["texture"] = textureJson(inputTexture, a.flag("no-texture"), texture, textureSeconds);
         writeJsonFile(*reportPath, report);
     }

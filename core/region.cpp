@@ -23,7 +23,8 @@ void checkRegionParams(const RegionParams& p)
         throw InvalidInputError(text);
     };
     if (!(p.grading > 0) || !std::isfinite(p.grading)) fail("grading", "a finite number > 0", p.grading);
-    if (!(p.uniformWithin >= 1) || !std::isfinite(p.uniformWithin)) fail("uniform factor", "a finite number >= 1", p.uniformWithin);
+    if (!(p.uniformWithin >= 1) || !std::isfinite(p.uniformWithin))
+        fail("uniform factor", "a finite number >= 1", p.uniformWithin);
     if (!(p.warnRatio >= 1) || !std::isfinite(p.warnRatio)) fail("warning ratio", "a finite number >= 1", p.warnRatio);
 }
 
@@ -61,7 +62,8 @@ int closePinches(const TriMesh& mesh, std::vector<char>& selected)
         std::map<std::pair<int, int>, int> faceCount;
         for (int f = 0; f < mesh.faceCount(); ++f)
             if (selected[size_t(f)])
-                for (int k = 0; k < 3; ++k) ++faceCount[std::minmax(mesh.faces[size_t(f)][k], mesh.faces[size_t(f)][(k + 1) % 3])];
+                for (int k = 0; k < 3; ++k)
+                    ++faceCount[std::minmax(mesh.faces[size_t(f)][k], mesh.faces[size_t(f)][(k + 1) % 3])];
         std::map<std::pair<int, int>, int> borderEdges;  // (piece, vertex) -> count
         for (int f = 0; f < mesh.faceCount(); ++f)
             if (selected[size_t(f)])

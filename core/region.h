@@ -109,8 +109,8 @@ struct RegionRemeshResult {
     //! The whole mesh in `result.mesh`; `result.metrics` are Table 2's figures of the new faces
     //! only (d_RMS / d_H against the selected input faces); warnings and notes of every region.
     RemeshResult result;
-    std::vector<int> vertexOrigin;  //!< output vertex -> input vertex, -1 for a new one
-    std::vector<int> faceOrigin;    //!< output face -> input face, -1 for a new one
+    std::vector<int> vertexOrigin;   //!< output vertex -> input vertex, -1 for a new one
+    std::vector<int> faceOrigin;     //!< output face -> input face, -1 for a new one
     QualityMetrics interiorMetrics;  //!< the new faces that have no border vertex
     int regions = 0;                 //!< edge-connected pieces of the selection
     int keptRegions = 0;             //!< pieces left as they were (too small, or remeshing failed: a warning says why)

@@ -77,7 +77,8 @@ RemeshParams pieceParams(const RemeshParams& params, const RegionSubmesh& region
     if (params.fieldSource == FieldSource::User) {
         p.userDirections.clear();
         for (int v : region.originalVertex)
-            p.userDirections.push_back(size_t(v) < params.userDirections.size() ? params.userDirections[size_t(v)] : Vec3::Zero());
+            p.userDirections.push_back(size_t(v) < params.userDirections.size() ? params.userDirections[size_t(v)]
+                                                                                : Vec3::Zero());
     }
     std::map<int, int> local;
     for (size_t v = 0; v < region.originalVertex.size(); ++v) local[region.originalVertex[v]] = int(v);
@@ -95,18 +96,18 @@ struct PieceOutcome {
 
 //! One piece: remesh(), pin its border, optimise the seam, check it. `result` collects the run's
 //! warnings, notes, times and evaluations.
-PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params, const RegionParams& regionParams,
-                         double target, const Progress& progress, RemeshResult& result, double& worstRatio,
-                         std::vector<std::string>& warnings)
+PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params, const RegionParams& regionParams, double target,
+                         const Progress& progress, RemeshResult& result, double& worstRatio, std::vector<std::string>& warnings)
 {
     PieceOutcome outcome;
     double ratio = 1;
     std::vector<double> mu = regionDensity(region, target, regionParams, &ratio);
     worstRatio = std::max(worstRatio, ratio);
     if (ratio > regionParams.warnRatio)
-        warnings.push_back(format("its border edges are up to %.2f times longer or shorter than the target length %.4g; "
-                                  "beyond %.0f times the triangles along the border may have angles under 20 degrees",
-                                  ratio, target, regionParams.warnRatio));
+        warnings.push_back(
+            format("its border edges are up to %.2f times longer or shorter than the target length %.4g; "
+                   "beyond %.0f times the triangles along the border may have angles under 20 degrees",
+                   ratio, target, regionParams.warnRatio));
     // Vertices of an equilateral mesh with edge 1 / sqrt(mu): 2 / sqrt(3) per unit of mu-weighted area.
     const double area = surfaceArea(region.mesh);
     double count = 2 / std::sqrt(3.0) * area / (target * target);
@@ -118,11 +119,14 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
         }
         graded *= 2 / std::sqrt(3.0);
         // A region too small for the grading to reach the target: the count asked for, uniform.
-        if (graded >= kMinVertexCount) count = graded;
-        else mu.clear();
+        if (graded >= kMinVertexCount)
+            count = graded;
+        else
+            mu.clear();
     }
     if (count < kMinVertexCount) {
-        outcome.reason = format("it holds %.2g vertices at the target edge length %.4g, fewer than 4: kept as it is", count, target);
+        outcome.reason =
+            format("it holds %.2g vertices at the target edge length %.4g, fewer than 4: kept as it is", count, target);
         return outcome;
     }
     if (count > kMaxVertexCount) throw InvalidInputError(format("a region needs %.3g vertices: too many", count));
@@ -138,9 +142,12 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
         return outcome;
     }
     for (const StageTime& t : run.stageTimes) {
-        auto it = std::find_if(result.stageTimes.begin(), result.stageTimes.end(), [&](const StageTime& s) { return s.stage == t.stage; });
-        if (it == result.stageTimes.end()) result.stageTimes.push_back(t);
-        else it->seconds += t.seconds;
+        auto it = std::find_if(result.stageTimes.begin(), result.stageTimes.end(),
+                               [&](const StageTime& s) { return s.stage == t.stage; });
+        if (it == result.stageTimes.end())
+            result.stageTimes.push_back(t);
+        else
+            it->seconds += t.seconds;
     }
     result.evaluations += run.evaluations;
     result.threads = run.threads;
@@ -167,7 +174,8 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
     flipForAngles(outcome.patch);
     if (params.outputInFloat)  // the new vertices only: the border keeps the input's coordinates
         for (size_t v = 0; v < outcome.patch.mesh.vertices.size(); ++v)
-            if (outcome.patch.original[v] < 0) outcome.patch.mesh.vertices[v] = outcome.patch.mesh.vertices[v].cast<float>().cast<double>();
+            if (outcome.patch.original[v] < 0)
+                outcome.patch.mesh.vertices[v] = outcome.patch.mesh.vertices[v].cast<float>().cast<double>();
     if (!patchMatchesBorder(region, outcome.patch)) {
         outcome.reason = "the remeshed faces do not meet the region's border edge to edge: kept as it is";
         return outcome;
@@ -257,8 +265,8 @@ RegionRemeshResult remeshRegion(const TriMesh& input, const std::vector<char>& s
             return !progress || progress(stage, (double(i) + percent / 100) / double(pieces.size()) * 100);
         };
         std::vector<std::string> warnings;
-        PieceOutcome piece = remeshPiece(region, params, regionParams, out.targetLength, pieceProgress, result,
-                                         out.worstBorderRatio, warnings);
+        PieceOutcome piece =
+            remeshPiece(region, params, regionParams, out.targetLength, pieceProgress, result, out.worstBorderRatio, warnings);
         const std::string name = pieces.size() > 1 ? "region " + std::to_string(i + 1) + " of " + std::to_string(pieces.size()) +
                                                          " (" + std::to_string(pieces[i].size()) + " faces): "
                                                    : "region (" + std::to_string(pieces[i].size()) + " faces): ";
@@ -285,7 +293,8 @@ RegionRemeshResult remeshRegion(const TriMesh& input, const std::vector<char>& s
     }
     result.inputTopology = computeTopology(input);
     result.outputTopology = computeTopology(stitched.mesh);
-    if (result.inputTopology.manifold() && !result.outputTopology.manifold()) result.warnings.push_back("the output is not manifold");
+    if (result.inputTopology.manifold() && !result.outputTopology.manifold())
+        result.warnings.push_back("the output is not manifold");
     result.mesh = std::move(stitched.mesh);
     out.vertexOrigin = std::move(stitched.vertexOrigin);
     out.faceOrigin = std::move(stitched.faceOrigin);

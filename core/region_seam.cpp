@@ -9,7 +9,6 @@
 #include <map>
 #include <unordered_map>
 
-
 namespace fieldcvt {
 
 namespace {
@@ -147,8 +146,9 @@ bool insertBorderVertices(const RegionSubmesh& region, const std::vector<std::ve
     }
     for (size_t l = 0; l < loops.size(); ++l)
         if (std::abs(turned[l] - double(loops[l].size())) > 0.5) {
-            failure = "the remeshed border does not go once around each border loop of the region (vertex count too "
-                      "low for the region's shape?)";
+            failure =
+                "the remeshed border does not go once around each border loop of the region (vertex count too "
+                "low for the region's shape?)";
             return false;
         }
     for (const auto& [a, b, between] : inserts) {
@@ -239,7 +239,8 @@ bool removeBorderVertex(PatchEdit& edit, int s)
                 const double facing = n.norm() > 0 ? n.normalized().dot(normal.normalized()) : -1;
                 const double shape = facing > 0 ? smallestAngleDegrees(p(i), p(k), p(j)) : facing - 2;
                 const double score = std::min({shape, left, right});
-                if (score > best[size_t(i * (m + 1) + j)]) best[size_t(i * (m + 1) + j)] = score, split[size_t(i * (m + 1) + j)] = k;
+                if (score > best[size_t(i * (m + 1) + j)])
+                    best[size_t(i * (m + 1) + j)] = score, split[size_t(i * (m + 1) + j)] = k;
             }
         }
     if (!(best[size_t(m)] > none)) return undo();
@@ -329,7 +330,8 @@ bool pinBorder(const RegionSubmesh& region, TriMesh& patch, std::vector<int>& or
         left.erase(std::remove_if(left.begin(), left.end(), [&](int s) { return removeBorderVertex(edit, s); }), left.end());
     }
     if (!left.empty()) {
-        failure = std::to_string(left.size()) + " hole(s) left by moving the remeshed border onto the region's border could "
+        failure = std::to_string(left.size()) +
+                  " hole(s) left by moving the remeshed border onto the region's border could "
                   "not be filled";
         return false;
     }
@@ -375,11 +377,14 @@ int flipForAngles(RegionPatch& patch, int maxPasses)
                 const Face u = edit.faces[size_t(g)];
                 const int d = u[0] != a && u[0] != b ? u[0] : u[1] != a && u[1] != b ? u[1] : u[2];
                 if (c == d || edit.hasEdge(c, d)) continue;
-                const double before = std::min(smallestAngleDegrees(at(a), at(b), at(c)), smallestAngleDegrees(at(b), at(a), at(d)));
-                const double after = std::min(smallestAngleDegrees(at(c), at(d), at(b)), smallestAngleDegrees(at(d), at(c), at(a)));
+                const double before =
+                    std::min(smallestAngleDegrees(at(a), at(b), at(c)), smallestAngleDegrees(at(b), at(a), at(d)));
+                const double after =
+                    std::min(smallestAngleDegrees(at(c), at(d), at(b)), smallestAngleDegrees(at(d), at(c), at(a)));
                 // The two new triangles must face the way the old ones did (a convex quadrilateral).
                 const Vec3 n = (at(b) - at(a)).cross(at(c) - at(a)) + (at(a) - at(b)).cross(at(d) - at(b));
-                const bool facing = (at(d) - at(c)).cross(at(b) - at(c)).dot(n) > 0 && (at(c) - at(d)).cross(at(a) - at(d)).dot(n) > 0;
+                const bool facing =
+                    (at(d) - at(c)).cross(at(b) - at(c)).dot(n) > 0 && (at(c) - at(d)).cross(at(a) - at(d)).dot(n) > 0;
                 if (!(after > before + 1e-9) || !facing) continue;
                 edit.kill(f);
                 edit.kill(g);
@@ -412,7 +417,8 @@ bool patchMatchesBorder(const RegionSubmesh& region, const RegionPatch& patch)
         if (patch.original[v] >= 0) {
             const auto it = std::find(region.originalVertex.begin(), region.originalVertex.end(), patch.original[v]);
             if (it == region.originalVertex.end() ||
-                !(region.mesh.vertices[size_t(it - region.originalVertex.begin())].array() == patch.mesh.vertices[v].array()).all())
+                !(region.mesh.vertices[size_t(it - region.originalVertex.begin())].array() == patch.mesh.vertices[v].array())
+                     .all())
                 return false;
         }
     for (const auto& [key, count] : directedEdges(patch.mesh.faces))

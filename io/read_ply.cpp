@@ -256,6 +256,20 @@ private:
     std::string problem_;
 };
 
+//! The index of the face element's scalar property `name` (the caller's face property, e.g.
+//! --region's); IOError naming the scalar properties the faces do have when it is missing.
+int scalarFaceProperty(const std::string& path, const Element& e, const std::string& name)
+{
+    std::string names;
+    for (std::size_t i = 0; i < e.properties.size(); ++i) {
+        if (e.properties[i].countSize != 0) continue;
+        if (e.properties[i].name == name) return static_cast<int>(i);
+        names += (names.empty() ? "" : ", ") + e.properties[i].name;
+    }
+    fail(path,
+         "PLY faces have no scalar property " + quoteInput(name) + " (they have: " + (names.empty() ? "none" : names) + ")");
+}
+
 }  // namespace
 
 TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info, VertexAttributes& attributes,
@@ -313,18 +327,8 @@ TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo&
             if (g.use) g.target->reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
         }
         if (isFace && indexList < 0) fail(path, "PLY faces lack a vertex_indices list");
-        // The face property asked for (attributes.faceProperty), a scalar.
-        int faceValue = -1;
-        if (isFace && !attributes.faceProperty.empty()) {
-            std::string names;
-            for (std::size_t i = 0; i < e.properties.size(); ++i) {
-                if (e.properties[i].countSize == 0 && e.properties[i].name == attributes.faceProperty) faceValue = int(i);
-                if (e.properties[i].countSize == 0) names += (names.empty() ? "" : ", ") + e.properties[i].name;
-            }
-            if (faceValue < 0)
-                fail(path, "PLY faces have no scalar property " + quoteInput(attributes.faceProperty) + " (they have: " +
-                               (names.empty() ? "none" : names) + ")");
-        }
+        const int faceValue =
+            isFace && !attributes.faceProperty.empty() ? scalarFaceProperty(path, e, attributes.faceProperty) : -1;
         double value = 0;  // of the current face
         if (isVertex) mesh.vertices.reserve(static_cast<std::size_t>(std::min(e.count, capacity)));
         std::vector<int> polygon;

@@ -53,8 +53,7 @@ void expectStitched(const TriMesh& input, const std::vector<char>& selected, con
         ++keptFaces;
         EXPECT_GT(origin, lastFace);
         lastFace = origin;
-        for (int k = 0; k < 3; ++k)
-            EXPECT_EQ(out.vertexOrigin[size_t(mesh.faces[f][k])], input.faces[size_t(origin)][k]);
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(out.vertexOrigin[size_t(mesh.faces[f][k])], input.faces[size_t(origin)][k]);
     }
     int unselected = 0;
     for (char s : selected) unselected += !s;
@@ -132,7 +131,8 @@ TEST(Region, ExtractionKeepsCoordinatesAndFindsTheBorder)
     // The loop runs with the region on its left: against the cap's outward normal, counter-clockwise.
     Vec3 turn = Vec3::Zero();
     for (size_t i = 0; i < loops[0].size(); ++i)
-        turn += region.mesh.vertices[size_t(loops[0][i])].cross(region.mesh.vertices[size_t(loops[0][(i + 1) % loops[0].size()])]);
+        turn +=
+            region.mesh.vertices[size_t(loops[0][i])].cross(region.mesh.vertices[size_t(loops[0][(i + 1) % loops[0].size()])]);
     EXPECT_GT(turn.z(), 0);
 }
 
@@ -184,9 +184,10 @@ TEST(Region, SphereCapKeepsTheRestAndIsWellShaped)
     EXPECT_EQ(out.keptRegions, 0) << warnings(out);
     EXPECT_LT(out.worstBorderRatio, 2.0);
     const QualityMetrics& m = out.result.metrics;
-    std::printf("cap: %d vertices asked, border ratio %.2f; new faces: theta_min %.1f, Q_avg %.3f, V6 %.1f %%, d_H %.3g; "
-                "interior theta_min %.1f\n",
-                vertices, out.worstBorderRatio, m.thetaMin, m.qAvg, m.v6Pct, m.dH, out.interiorMetrics.thetaMin);
+    std::printf(
+        "cap: %d vertices asked, border ratio %.2f; new faces: theta_min %.1f, Q_avg %.3f, V6 %.1f %%, d_H %.3g; "
+        "interior theta_min %.1f\n",
+        vertices, out.worstBorderRatio, m.thetaMin, m.qAvg, m.v6Pct, m.dH, out.interiorMetrics.thetaMin);
     EXPECT_GE(m.thetaMin, 20.0) << "border edges within 2x of the target: no angle under 20 degrees";
     EXPECT_GT(m.qAvg, 0.85);
     EXPECT_GT(out.interiorMetrics.thetaMin, 30.0);
@@ -202,7 +203,8 @@ TEST(Region, EverythingSelectedIsTheFullRemesh)
     const RemeshResult full = remesh(sphere, p);
     EXPECT_TRUE(out.wholeMesh);
     ASSERT_EQ(out.result.mesh.vertices.size(), full.mesh.vertices.size());
-    for (size_t v = 0; v < full.mesh.vertices.size(); ++v) EXPECT_TRUE(sameBits(out.result.mesh.vertices[v], full.mesh.vertices[v]));
+    for (size_t v = 0; v < full.mesh.vertices.size(); ++v)
+        EXPECT_TRUE(sameBits(out.result.mesh.vertices[v], full.mesh.vertices[v]));
     EXPECT_EQ(out.result.mesh.faces, full.mesh.faces);
 }
 
@@ -281,7 +283,8 @@ TEST(Region, APieceTouchingItselfAtAVertexIsClosedThere)
     std::vector<char> selected(grid.faces.size(), 0);
     auto block = [&](int bx, int by) {  // 2 x 2 cells
         for (int y = 2 * by; y < 2 * by + 2; ++y)
-            for (int x = 2 * bx; x < 2 * bx + 2; ++x) selected[size_t(2 * (y * n + x))] = selected[size_t(2 * (y * n + x) + 1)] = 1;
+            for (int x = 2 * bx; x < 2 * bx + 2; ++x)
+                selected[size_t(2 * (y * n + x))] = selected[size_t(2 * (y * n + x) + 1)] = 1;
     };
     // A hook from block (2, 2) round to block (3, 3): they meet at the vertex (6, 6) only.
     for (const auto& [x, y] : std::vector<std::pair<int, int>>{{2, 2}, {2, 1}, {3, 1}, {4, 1}, {4, 2}, {4, 3}, {3, 3}})
