@@ -25,13 +25,13 @@ rm -rf "$work"; mkdir -p "$work"
 
 body() { sed -n '/<filter /,/<\/filter>/p' "$1"; }
 # FCVT_PICTURE_REGION=1: only a disk of faces (MeshLab's Conditional Face Selection, as the
-# meshlab_remesh_selected test) is remeshed, with VERTICES vertices ("Remesh only selected faces").
+# meshlab_remesh_selected test's centre, radius 0.063) is remeshed, with VERTICES vertices ("Remesh only selected faces").
 region="${FCVT_PICTURE_REGION:-0}"
 {
   echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
   if [ "$region" = 1 ]; then
     echo ' <filter name="Conditional Face Selection">'
-    echo '  <Param type="RichString" name="condSelect" value="(((x0+x1+x2)/3+0.025969)^2+((y0+y1+y2)/3-0.156664)^2+((z0+z1+z2)/3+0.002607)^2 &lt; 0.0014)" description="boolean function" tooltip="a disk of faces"/>'
+    echo '  <Param type="RichString" name="condSelect" value="(((x0+x1+x2)/3+0.025969)^2+((y0+y1+y2)/3-0.156664)^2+((z0+z1+z2)/3+0.002607)^2 &lt; 0.004)" description="boolean function" tooltip="a disk of faces"/>'
     echo ' </filter>'
   fi
   body "$here/resources/fcvt-remesh.mlx" | sed "s/\(name=\"vertexCount\"[^>]*value=\"\)[^\"]*\"/\1$vertices\"/" \
