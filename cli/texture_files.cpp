@@ -43,6 +43,15 @@ bool namesFile(const std::string& keyword)
     return keyword.rfind("map_", 0) == 0 || keyword == "bump" || keyword == "disp" || keyword == "decal" || keyword == "refl";
 }
 
+//! A material file line's keyword (newmtl, map_Kd, ...).
+std::string firstWord(const std::string& line)
+{
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    return keyword;
+}
+
 std::string lastWord(const std::string& line)
 {
     const std::size_t end = line.find_last_not_of(" \t\r");
@@ -83,9 +92,7 @@ void lookUpMaterialImages(MeshTexture& texture, const std::string& inPath, std::
         std::istringstream lines(text);
         std::string line, material;
         while (std::getline(lines, line)) {
-            std::istringstream words(line);
-            std::string keyword;
-            words >> keyword;
+            const std::string keyword = firstWord(line);
             if (keyword == "newmtl") material = lastWord(line);
             if (keyword != "map_Kd") continue;
             for (TextureMaterial& m : texture.materials)
@@ -125,9 +132,7 @@ void placeTextureFiles(MeshTexture& texture, const std::string& inPath, const st
             std::istringstream lines(text);
             std::string line, copy;
             while (std::getline(lines, line)) {
-                std::istringstream words(line);
-                std::string keyword;
-                words >> keyword;
+                const std::string keyword = firstWord(line);
                 const std::string file = lastWord(line);
                 if (namesFile(keyword) && !file.empty())
                     line =

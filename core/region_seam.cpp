@@ -1,6 +1,7 @@
 // The seam of a remeshed region (region.h): its border put exactly on the region's own border
 // vertices, so that the new faces meet the kept ones edge to edge.
 #include "region.h"
+#include "triangle_shape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,16 +38,8 @@ std::vector<std::pair<int, int>> borderHalfEdges(const std::vector<Face>& faces)
     return out;
 }
 
-double smallestAngleDegrees(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-    const Vec3 p[3] = {a, b, c};
-    double smallest = 180;
-    for (int k = 0; k < 3; ++k) {
-        const Vec3 u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
-        smallest = std::min(smallest, std::atan2(u.cross(v).norm(), u.dot(v)) * 180 / kPi);
-    }
-    return smallest;
-}
+//! In degrees: the flips compare it with the caller's bounds (triangle_shape.h's, converted).
+double smallestAngleDegrees(const Vec3& a, const Vec3& b, const Vec3& c) { return smallestAngle(a, b, c) * 180 / kPi; }
 
 //! Where a point of the patch's border lies on the region's border: loop, and position along it
 //! (segment index + fraction).

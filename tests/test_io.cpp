@@ -1,5 +1,6 @@
 // Mesh file reading and writing (io/): every format, round trips, and broken files that must
 // give an IOError, never a crash.
+#include "temp_dir_test.h"
 #include "errors.h"
 #include "mesh_io.h"
 #include "test_meshes.h"
@@ -20,34 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-//! A fresh directory per test for the files it writes.
-class IoTest : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("fcvt_test_io_" + std::to_string(::getpid()) + "_" + info->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    std::string write(const std::string& name, const std::string& bytes) const
-    {
-        std::ofstream(path(name), std::ios::binary) << bytes;
-        return path(name);
-    }
-    static std::string bytes(const std::string& file)
-    {
-        std::ifstream in(file, std::ios::binary);
-        std::ostringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-
-    fs::path dir_;
-};
+//! A fresh directory per test for the files it writes (temp_dir_test.h).
+class IoTest : public TempDirTest {};
 
 //! The unit square as two triangles, in the order every reader below must reproduce.
 void expectSquare(const TriMesh& m)

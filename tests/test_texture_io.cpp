@@ -1,5 +1,6 @@
 // Texture coordinates in the OBJ and PLY readers and writers (issue 36): per-corner `vt`, negative
 // indices, materials, MeshLab's `texcoord` / `texnumber` / `TextureFile`, broken ones dropped.
+#include "temp_dir_test.h"
 #include "mesh_io.h"
 
 #include <gtest/gtest.h>
@@ -17,33 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TextureIoTest : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("fcvt_test_texture_io_" + std::to_string(::getpid()) + "_" + info->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    std::string write(const std::string& name, const std::string& bytes) const
-    {
-        std::ofstream(path(name), std::ios::binary) << bytes;
-        return path(name);
-    }
-    static std::string bytes(const std::string& file)
-    {
-        std::ifstream in(file, std::ios::binary);
-        std::ostringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-
-    fs::path dir_;
-};
+//! A fresh directory per test for the files it writes (temp_dir_test.h).
+class TextureIoTest : public TempDirTest {};
 
 //! Two triangles and a quad, three materials (the first faces before any usemtl), a seam at
 //! vertex 2 (two vt), negative and positive indices.

@@ -7,67 +7,13 @@ Usage: check_region.py FCVT MESH|sphere VERTICES WORKDIR RADIUS THETA_MIN Q_AVG 
 import json
 import math
 import os
-import struct
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fcvt_check import check, expect_error, finish, measure, run, run_ok  # noqa: E402
-
-
-def icosphere(levels):
-    t = (1 + math.sqrt(5)) / 2
-    vertices = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
-                (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
-    unit = lambda p: tuple(c / math.sqrt(sum(x * x for x in p)) for c in p)  # noqa: E731
-    vertices = [unit(p) for p in vertices]
-    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
-             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5),
-             (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
-    for _ in range(levels):
-        middle = {}
-
-        def mid(a, b):
-            key = (min(a, b), max(a, b))
-            if key not in middle:
-                vertices.append(unit(tuple((vertices[a][k] + vertices[b][k]) / 2 for k in range(3))))
-                middle[key] = len(vertices) - 1
-            return middle[key]
-        new = []
-        for a, b, c in faces:
-            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
-            new += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
-        faces = new
-    return vertices, faces
-
-
-def read_fcvt_ply(path):
-    """fcvt's binary PLY: double x y z (+ float extras) and triangles with an optional float face
-    property. Returns (vertices, faces, face values or None)."""
-    with open(path, "rb") as f:
-        data = f.read()
-    end = data.index(b"end_header\n") + len(b"end_header\n")
-    vertex_format, element, nv, nf, face_value = "<", None, 0, 0, False
-    for line in data[:end].decode("ascii").splitlines():
-        words = line.split()
-        if words[0] == "element":
-            element = words[1]
-            nv = int(words[2]) if element == "vertex" else nv
-            nf = int(words[2]) if element == "face" else nf
-        elif words[0] == "property" and element == "vertex":
-            vertex_format += {"double": "d", "float": "f"}[words[1]]
-        elif words[0] == "property" and element == "face" and words[1] != "list":
-            face_value = True
-    size = struct.calcsize(vertex_format)
-    vertices = [struct.unpack_from(vertex_format, data, end + i * size)[:3] for i in range(nv)]
-    offset, faces, values = end + nv * size, [], []
-    for _ in range(nf):
-        _, a, b, c = struct.unpack_from("<Biii", data, offset)
-        faces.append((a, b, c))
-        offset += 13
-        if face_value:
-            values.append(struct.unpack_from("<f", data, offset)[0])
-            offset += 4
-    return vertices, faces, values if face_value else None
+from fcvt_check import (check, edge_counts, expect_error, finish, is_subsequence, measure,  # noqa: E402
+                        read_ply_face_values, run, run_ok)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "robustness"))
+from meshgen import icosphere  # noqa: E402
 
 
 def write_marked_ply(path, vertices, faces, selected):
@@ -81,30 +27,17 @@ def write_marked_ply(path, vertices, faces, selected):
         f.write("\n".join(lines) + "\n")
 
 
-def is_subsequence(part, whole):
-    it = iter(whole)
-    return all(any(x == y for y in it) for x in part)
-
-
-def edge_counts(faces):
-    counts = {}
-    for f in faces:
-        for k in range(3):
-            e = tuple(sorted((f[k], f[(k + 1) % 3])))
-            counts[e] = counts.get(e, 0) + 1
-    return counts
-
-
 def main():
     fcvt, mesh, vertex_count, work = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
     radius_share, theta_bar, q_bar, v6_bar = (float(x) for x in sys.argv[5:9])
     os.makedirs(work, exist_ok=True)
     if mesh == "sphere":
         vertices, faces = icosphere(4)
+        vertices, faces = [tuple(p) for p in vertices], [tuple(f) for f in faces]
     else:
         converted = os.path.join(work, "input.ply")
         run_ok([fcvt, "convert", mesh, converted])
-        vertices, faces, _ = read_fcvt_ply(converted)
+        vertices, faces, _ = read_ply_face_values(converted)
     lo = [min(p[k] for p in vertices) for k in range(3)]
     hi = [max(p[k] for p in vertices) for k in range(3)]
     diagonal = math.dist(lo, hi)
@@ -116,7 +49,7 @@ def main():
     out, report = os.path.join(work, "out.ply"), os.path.join(work, "report.json")
     print(run_ok([fcvt, "remesh", marked, out, "--region", "quality", "--vertices", str(vertex_count), "--seed", "1",
                   "--report", report]))
-    new_vertices, new_faces, values = read_fcvt_ply(out)
+    new_vertices, new_faces, values = read_ply_face_values(out)
     region = json.load(open(report))["region"]
 
     # The kept faces: the unselected input faces, in order, on the same coordinates bit for bit.

@@ -84,48 +84,21 @@ def metrics_json(fcvt, mesh, ref=None):
     return json.loads(run_ok(args))
 
 
-def read_ply(path):
-    """Reads the binary little-endian PLY that fcvt writes: double x y z (+ float extras),
-    then uchar-int triangle lists. Returns (vertices, faces)."""
+_PLY_TYPES = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I", "float": "f",
+              "double": "d"}
+
+
+def _read_fcvt_ply(path):
+    """The binary little-endian PLY that fcvt writes: vertex scalars (double x y z, float extras),
+    faces with their vertex_indices triangle, other lists (texcoord) skipped, and at most one
+    scalar face property (e.g. --region's). Returns (vertex property names, one tuple per vertex,
+    faces, face values or None)."""
     with open(path, "rb") as f:
         data = f.read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
     header = data[:end].decode("ascii").splitlines()
     assert header[1] == "format binary_little_endian 1.0", header[1]
-    nv = nf = 0
-    vertex_format = "<"
-    element = None
-    for line in header:
-        words = line.split()
-        if words[0] == "element":
-            element = words[1]
-            if element == "vertex":
-                nv = int(words[2])
-            elif element == "face":
-                nf = int(words[2])
-        elif words[0] == "property" and element == "vertex":
-            vertex_format += {"double": "d", "float": "f"}[words[1]]
-    size = struct.calcsize(vertex_format)
-    vertices = [struct.unpack_from(vertex_format, data, end + i * size)[:3] for i in range(nv)]
-    offset = end + nv * size
-    faces = []
-    for _ in range(nf):
-        count, a, b, c = struct.unpack_from("<Biii", data, offset)
-        assert count == 3
-        faces.append((a, b, c))
-        offset += 13
-    return vertices, faces
-
-
-def read_ply_vertex_properties(path):
-    """Reads the binary little-endian PLY that fcvt writes; returns (property names, one tuple of
-    values per vertex, faces)."""
-    with open(path, "rb") as f:
-        data = f.read()
-    end = data.index(b"end_header\n") + len(b"end_header\n")
-    header = data[:end].decode("ascii").splitlines()
-    assert header[1] == "format binary_little_endian 1.0", header[1]
-    names, vertex_format, element, nv, nf = [], "<", None, 0, 0
+    names, vertex_format, face_properties, element, nv, nf = [], "<", [], None, 0, 0
     for line in header:
         words = line.split()
         if words[0] == "element":
@@ -133,18 +106,66 @@ def read_ply_vertex_properties(path):
             nv = int(words[2]) if element == "vertex" else nv
             nf = int(words[2]) if element == "face" else nf
         elif words[0] == "property" and element == "vertex":
-            vertex_format += {"double": "d", "float": "f"}[words[1]]
+            vertex_format += _PLY_TYPES[words[1]]
             names.append(words[2])
+        elif words[0] == "property" and element == "face":
+            face_properties.append(words[1:])
     size = struct.calcsize(vertex_format)
     rows = [struct.unpack_from(vertex_format, data, end + i * size) for i in range(nv)]
-    offset = end + nv * size
-    faces = []
+    offset, faces, values = end + nv * size, [], []
     for _ in range(nf):
-        count, a, b, c = struct.unpack_from("<Biii", data, offset)
-        assert count == 3
-        faces.append((a, b, c))
-        offset += 13
+        for p in face_properties:
+            if p[0] == "list":
+                count = struct.unpack_from("<" + _PLY_TYPES[p[1]], data, offset)[0]
+                offset += struct.calcsize(_PLY_TYPES[p[1]])
+                items = struct.unpack_from("<%d%s" % (count, _PLY_TYPES[p[2]]), data, offset)
+                offset += count * struct.calcsize(_PLY_TYPES[p[2]])
+                if p[3] == "vertex_indices":
+                    assert count == 3
+                    faces.append(tuple(items))
+            else:
+                value = struct.unpack_from("<" + _PLY_TYPES[p[0]], data, offset)[0]
+                offset += struct.calcsize(_PLY_TYPES[p[0]])
+                values.append(value)
+    scalars = sum(1 for p in face_properties if p[0] != "list")
+    assert scalars <= 1, "at most one scalar face property"
+    return names, rows, faces, values if scalars else None
+
+
+def read_ply(path):
+    """Reads the binary little-endian PLY that fcvt writes. Returns (vertices, faces)."""
+    _, rows, faces, _ = _read_fcvt_ply(path)
+    return [r[:3] for r in rows], faces
+
+
+def read_ply_face_values(path):
+    """The same, with the scalar face property fcvt wrote (--region's). Returns (vertices, faces,
+    face values or None)."""
+    _, rows, faces, values = _read_fcvt_ply(path)
+    return [r[:3] for r in rows], faces, values
+
+
+def read_ply_vertex_properties(path):
+    """Reads the binary little-endian PLY that fcvt writes; returns (property names, one tuple of
+    values per vertex, faces)."""
+    names, rows, faces, _ = _read_fcvt_ply(path)
     return names, rows, faces
+
+
+def edge_counts(faces):
+    """Undirected edge (sorted ends) -> how many faces have it."""
+    counts = {}
+    for f in faces:
+        for k in range(3):
+            e = tuple(sorted((f[k], f[(k + 1) % 3])))
+            counts[e] = counts.get(e, 0) + 1
+    return counts
+
+
+def is_subsequence(part, whole):
+    """Every item of `part` occurs in `whole`, in the same order."""
+    it = iter(whole)
+    return all(any(x == y for y in it) for x in part)
 
 
 FIELD_PROPERTIES = ["nx", "ny", "nz", "rosy_x", "rosy_y", "rosy_z"]
@@ -176,7 +197,7 @@ def check_field_properties(path, label, tolerance=1e-6):
 
 def euler_characteristic(faces):
     """V - E + F over the referenced vertices."""
-    edges = {tuple(sorted((f[k], f[(k + 1) % 3]))) for f in faces for k in range(3)}
+    edges = edge_counts(faces)
     vertices = {v for f in faces for v in f}
     return len(vertices) - len(edges) + len(faces)
 

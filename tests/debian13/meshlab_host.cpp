@@ -78,6 +78,15 @@ void printLog(const GLLogStream& log)
     std::fflush(stdout);
 }
 
+// Calls visit(plugin, action) for each filter of libfilter_fcvt.so (the only ones the dumps list).
+template <class Visit>
+void forEachFcvtFilter(PluginManager& pm, Visit visit)
+{
+    for (FilterPlugin* plugin : pm.filterPluginIterator())
+        if (plugin->pluginFileInfo().fileName() == "libfilter_fcvt.so")
+            for (QAction* action : plugin->actions()) visit(*plugin, action);
+}
+
 void dumpFilters(PluginManager& pm, const QString& path)
 {
     FILE* fp = std::fopen(qUtf8Printable(path), "w");
@@ -85,21 +94,18 @@ void dumpFilters(PluginManager& pm, const QString& path)
     MeshDocument md;  // no mesh, as meshlabserver -d
     int i = 0;
     std::fprintf(fp, "/*! \\mainpage MeshLab Filter Documentation\n");
-    for (FilterPlugin* fp2 : pm.filterPluginIterator()) {
-        if (fp2->pluginFileInfo().fileName() != "libfilter_fcvt.so") continue;
-        for (QAction* action : fp2->actions()) {
-            std::fprintf(fp, "\n\\section f%i %s \n\n%s\n", i++, qUtf8Printable(action->text()),
-                         qUtf8Printable(fp2->filterInfo(action)));
-            std::fprintf(fp, "<H2> Parameters </h2>\n");
-            const RichParameterList params = fp2->initParameterList(action, md);
-            std::fprintf(fp, "<TABLE>\n");
-            for (const RichParameter& p : params)
-                std::fprintf(fp, "<TR><TD> \\c %s  </TD> <TD> %s </TD> <TD><i> %s -- </i></TD> </TR>\n",
-                             qUtf8Printable(p.stringType().mid(4)), qUtf8Printable(p.fieldDescription()),
-                             qUtf8Printable(p.toolTip()));
-            std::fprintf(fp, "</TABLE>\n");
-        }
-    }
+    forEachFcvtFilter(pm, [&](FilterPlugin& plugin, QAction* action) {
+        std::fprintf(fp, "\n\\section f%i %s \n\n%s\n", i++, qUtf8Printable(action->text()),
+                     qUtf8Printable(plugin.filterInfo(action)));
+        std::fprintf(fp, "<H2> Parameters </h2>\n");
+        const RichParameterList params = plugin.initParameterList(action, md);
+        std::fprintf(fp, "<TABLE>\n");
+        for (const RichParameter& p : params)
+            std::fprintf(fp, "<TR><TD> \\c %s  </TD> <TD> %s </TD> <TD><i> %s -- </i></TD> </TR>\n",
+                         qUtf8Printable(p.stringType().mid(4)), qUtf8Printable(p.fieldDescription()),
+                         qUtf8Printable(p.toolTip()));
+        std::fprintf(fp, "</TABLE>\n");
+    });
     std::fprintf(fp, "*/");
     std::fclose(fp);
 }
@@ -110,15 +116,12 @@ void dumpPythonNames(PluginManager& pm, const QString& path)
     FILE* fp = std::fopen(qUtf8Printable(path), "w");
     if (fp == nullptr) die("cannot write " + path);
     MeshDocument md;
-    for (FilterPlugin* plugin : pm.filterPluginIterator()) {
-        if (plugin->pluginFileInfo().fileName() != "libfilter_fcvt.so") continue;
-        for (QAction* action : plugin->actions()) {
-            std::fprintf(fp, "%s:", qUtf8Printable(plugin->pythonFilterName(action)));
-            for (const RichParameter& p : plugin->initParameterList(action, md))
-                std::fprintf(fp, " %s", qUtf8Printable(p.pythonName()));
-            std::fprintf(fp, "\n");
-        }
-    }
+    forEachFcvtFilter(pm, [&](FilterPlugin& plugin, QAction* action) {
+        std::fprintf(fp, "%s:", qUtf8Printable(plugin.pythonFilterName(action)));
+        for (const RichParameter& p : plugin.initParameterList(action, md))
+            std::fprintf(fp, " %s", qUtf8Printable(p.pythonName()));
+        std::fprintf(fp, "\n");
+    });
     std::fclose(fp);
 }
 
