@@ -3,8 +3,7 @@
 #include "arguments.h"
 #include "commands.h"
 #include "errors.h"
-
-#include <unistd.h>
+#include "huge_pages.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -63,25 +62,13 @@ int run(const std::vector<std::string>& args)
     throw UsageError("unknown command '" + command + "' (try 'fcvt --help')");
 }
 
-//! The heap in transparent huge pages where the kernel offers them on request (Debian's default,
-//! "madvise"): glibc reads GLIBC_TUNABLES=glibc.malloc.hugetlb=1 only as it loads, so it is set
-//! here and the same program runs again (a GLIBC_TUNABLES the user set is kept). Measured
-//! (issue 31, whole commands, medians of 7, 2 threads): without it bunny 5000 takes 9 % longer,
-//! nefertiti 10000 6 %, and the hot loops' user time, not the page faults' system time, is what
-//! grows (fewer TLB misses). glibc 2.36 has no in-process switch for it, so the MeshLab filter
-//! runs without. How idle OpenMP threads wait is decided in-process by the core for the CLI and
-//! the MeshLab filter alike (thread_budget.h).
-void chooseHeapSettings(char** argv)
-{
-    if (std::getenv("GLIBC_TUNABLES")) return;
-    if (setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0) execv("/proc/self/exe", argv);  // returns only on failure
-}
-
 }  // namespace
 
 int main(int argc, char** argv)
 {
-    chooseHeapSettings(argv);
+    // The whole command's memory in huge pages, the input's too (remesh() alone would cover only
+    // what its stages allocate): in-process, as the MeshLab filter gets them (huge_pages.h).
+    const fieldcvt::HugePageHeap heap;
     try {
         return run(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const fieldcvt::cli::UsageError& e) {

@@ -1,6 +1,7 @@
 #include "remesh.h"
 
 #include "errors.h"
+#include "huge_pages.h"
 #include "remesh_stages.h"
 #include "thread_budget.h"
 
@@ -110,6 +111,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     checkRemeshParams(params);
     const int threadCount = threadsForThisMachine(params.threads);
     const ThreadCountScope threads(threadCount);
+    const HugePageHeap heap;  // and adviseHugePages() before each stage (Pipeline::run)
     RemeshResult result;
     result.threads = threadCount;
     RemeshRun run(input, params, progress, result);

@@ -8,6 +8,7 @@
 #include "feature_lines.h"
 #include "field.h"
 #include "field_hierarchy.h"
+#include "huge_pages.h"
 #include "remesh.h"
 #include "simplify.h"
 #include "valence.h"
@@ -41,6 +42,7 @@ public:
     {
         const auto start = Clock::now();
         report(name, percent_);
+        adviseHugePages();  // the memory the earlier stages added, before this one works on it
         try {
             stage();
         } catch (const TimeLimitReached&) {

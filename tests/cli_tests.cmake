@@ -123,12 +123,10 @@ add_test(NAME cli_progress
           ${FCVT_CLI_WORK}/progress)
 set_tests_properties(cli_progress PROPERTIES LABELS "cli" TIMEOUT 600)
 
-# Issue 12: the command runs itself again with the settings the C library and libgomp read as
-# they load: the heap in transparent huge pages (GLIBC_TUNABLES), and idle OpenMP threads that
-# sleep at once (OMP_WAIT_POLICY=PASSIVE, spin count 0) when other tasks compete for the cores as
-# it starts, unless the user chose; on an idle machine they keep libgomp's brief spin
-# (tests/test_wait_policy.cpp). (Setting the variable from the executable's .preinit_array,
-# before libgomp's initialiser, did not do: libgomp 12 then showed PASSIVE but kept spinning.)
+# Issues 12, 31 and 38: the settings the command runs with, all in-process and shared with the
+# MeshLab filter: the heap in transparent huge pages (core/huge_pages.h; no GLIBC_TUNABLES, no
+# second start), and one OpenMP thread per core no other task holds (core/thread_budget.h), so
+# that no idle thread spins on a core a busy process wants.
 add_test(NAME cli_runtime_settings
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_runtime_settings.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}
           ${FCVT_CLI_WORK}/runtime_settings)

@@ -1,0 +1,81 @@
+#include "huge_pages.h"
+
+#include <malloc.h>
+#include <sys/mman.h>
+
+#include <cinttypes>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+
+namespace fieldcvt {
+
+namespace {
+
+constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
+
+std::mutex heapMutex;
+int heapScopes = 0;  // HugePageHeap scopes alive, guarded by heapMutex
+
+//! One line of /proc/self/maps is anonymous private memory: the heap, or an unnamed mapping
+//! (malloc's arenas and blocks, readable-writable or still reserved; "[anon:...]" where an allocator
+//! names its mappings), never the stack or a file.
+bool isAnonymousPrivate(const char* perms, unsigned long long inode, const char* name)
+{
+    if (inode != 0) return false;
+    if (std::strcmp(perms, "rw-p") != 0 && std::strcmp(perms, "---p") != 0) return false;
+    return *name == '\n' || *name == '\0' || std::strncmp(name, "[heap]", 6) == 0 || std::strncmp(name, "[anon:", 6) == 0;
+}
+
+}  // namespace
+
+long long adviseHugePages()
+{
+#ifdef MADV_HUGEPAGE
+    std::FILE* maps = std::fopen("/proc/self/maps", "r");
+    if (!maps) return 0;
+    long long marked = 0;
+    char line[512];
+    while (std::fgets(line, sizeof line, maps)) {
+        std::uintptr_t begin = 0, end = 0;
+        char perms[8] = {}, device[16] = {};
+        unsigned long long offset = 0, inode = 0;
+        int nameAt = 0;
+        if (std::sscanf(line, "%" SCNxPTR "-%" SCNxPTR " %7s %llx %15s %llu %n", &begin, &end, perms, &offset, device, &inode,
+                        &nameAt) < 6)
+            continue;
+        if (!isAnonymousPrivate(perms, inode, line + nameAt)) continue;
+        const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
+        const std::uintptr_t last = end & ~(kHugePage - 1);
+        if (last > first && madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE) == 0)
+            marked += static_cast<long long>(last - first);
+    }
+    std::fclose(maps);
+    return marked;
+#else
+    return 0;
+#endif
+}
+
+HugePageHeap::HugePageHeap()
+{
+    {
+        const std::lock_guard<std::mutex> lock(heapMutex);
+        if (heapScopes++ == 0) {
+            mallopt(M_MMAP_THRESHOLD, 32 << 20);
+            mallopt(M_TOP_PAD, 64 << 20);
+            std::free(std::malloc(256 << 10));  // grows the heap now, by the new pad
+        }
+    }
+    adviseHugePages();
+}
+
+HugePageHeap::~HugePageHeap()
+{
+    const std::lock_guard<std::mutex> lock(heapMutex);
+    if (--heapScopes == 0) mallopt(M_TOP_PAD, 128 << 10);
+}
+
+}  // namespace fieldcvt
