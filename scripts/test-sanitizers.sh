@@ -28,7 +28,10 @@ echo "== unit tests under ASan/UBSan"
 # Through CTest, one process per GoogleTest case (gtest_discover_tests): a sanitizer report
 # aborts only its own test. Unit tests are the "Suite.Name" ones (the end-to-end tests differ).
 ctest --test-dir "$san" -R '^[A-Za-z0-9_]+\.[A-Za-z0-9_/]+$' -j "$jobs" --output-on-failure \
-      >"$san/unit-tests.log" 2>&1 || finding "unit tests failed under sanitizers (log: $san/unit-tests.log)"
+      >"$san/unit-tests.log" 2>&1 || {
+  finding "unit tests failed under sanitizers (log: $san/unit-tests.log)"
+  grep -B2 -A12 -E "Failure$|\[  FAILED  \]|ERROR: |runtime error:" "$san/unit-tests.log" | head -n 80 >&2
+}
 grep -E "tests passed|tests failed|\(Failed\)|\(Subprocess aborted\)|\(Timeout\)" "$san/unit-tests.log" | tail -n 25
 grep -qE "ERROR: (Address|Leak)Sanitizer|runtime error:" "$san/unit-tests.log" \
   && finding "sanitizer report in the unit tests: $(grep -m1 -E "SUMMARY: |runtime error:" "$san/unit-tests.log")"

@@ -8,11 +8,20 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$here/scripts/setup.sh"
 bash "$here/scripts/build.sh"
 
+# The step's output is kept so that its findings can be printed again at the very end, where a
+# CI log's tail shows them (the CTest output comes in between).
+sanitizer_log="$(mktemp -t fcvt-sanitizers.XXXXXX)"
 sanitizers=0
-FCVT_FUZZ_SECONDS="${FCVT_FUZZ_SECONDS:-30}" bash "$here/scripts/test-sanitizers.sh" || sanitizers=$?
+FCVT_FUZZ_SECONDS="${FCVT_FUZZ_SECONDS:-30}" bash "$here/scripts/test-sanitizers.sh" > >(tee "$sanitizer_log") 2>&1 || sanitizers=$?
 
 cd "${FCVT_BUILD_DIR:-$here/build}"
 tests=0
 ctest --output-on-failure -j "$(nproc)" || tests=$?
-if [ "$sanitizers" -ne 0 ]; then echo "test.sh: the sanitizer/fuzzing step failed (exit $sanitizers)" >&2; fi
+if [ "$sanitizers" -ne 0 ]; then
+  echo "test.sh: the sanitizer/fuzzing step failed (exit $sanitizers); what it found:" >&2
+  grep -E "FINDING|\(Failed\)|\(Subprocess aborted\)|\(Timeout\)|SUMMARY:|runtime error|ERROR:|\*\*\* \[|fatal error|Failure$|FAIL" \
+    "$sanitizer_log" | head -n 40 >&2 || true
+  tail -n 15 "$sanitizer_log" >&2
+fi
+rm -f "$sanitizer_log"
 [ "$sanitizers" -eq 0 ] && [ "$tests" -eq 0 ]
