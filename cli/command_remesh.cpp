@@ -65,6 +65,8 @@ void printUsage()
         "                        they are repaired: exact and near duplicate vertices welded, duplicate\n"
         "                        and opposite faces removed, non-manifold edges and vertices split,\n"
         "                        non-orientable pieces cut, components too small for N dropped)\n"
+        "  --keep-holes          keep every hole open (by default a hole under 2 edge lengths across\n"
+        "                        is closed before remeshing, counted in a warning)\n"
         "  --feature-angle DEG   input edges with a dihedral angle >= DEG degrees are sharp features the\n"
         "                        output follows, 0..180 (default %g: off)\n"
         "  --adaptive D          sample density: none (uniform) or curvature (more vertices where the\n"
@@ -127,6 +129,7 @@ RemeshParams paramsFrom(const Arguments& a)
     p.latticeStart = !a.flag("random-start");
     if (a.flag("full-surface")) p.optimisationFacesPerSample = 0;
     p.repair = !a.flag("no-repair");
+    if (a.flag("keep-holes")) p.closeHolesUnder = 0;
     p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees);
     if (const auto adaptive = a.text("adaptive")) {
         if (*adaptive == "curvature")
@@ -362,7 +365,7 @@ int runRemesh(const std::vector<std::string>& args)
     const Arguments a(args,
                       {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations",
                        "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region"},
-                      {"quiet", "help", "no-valence", "no-repair", "full-surface", "random-start", "no-texture"});
+                      {"quiet", "help", "no-valence", "no-repair", "keep-holes", "full-surface", "random-start", "no-texture"});
     if (a.flag("help")) {
         printUsage();
         return 0;

@@ -144,6 +144,11 @@ struct RemeshParams {
     //! strict check only, which refuses what it cannot take. vertexBudget is set by remesh().
     bool repair = true;
     RepairParams repairParams;
+    //! Holes whose border spans less than this many target edge lengths (the bounding box of the
+    //! border's vertices) are closed before remeshing (hole_filling.h), counted in a warning;
+    //! 0 keeps every hole (CLI --keep-holes). 2: the output's cells cannot follow a border that
+    //! small (issue 32: "holes smaller than about two edge lengths across are closed").
+    double closeHolesUnder = 2.0;
 };
 
 //! How a front end names the parameters in its messages: the CLI by its options

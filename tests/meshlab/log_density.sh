@@ -62,8 +62,11 @@ grep -q "FCVT: new layer 'bunny_FCVT(1)':" "$log" || fail "the rerun's output is
 [ "$(grep -c "^LOG: 2 FCVT valence optimisation:" "$log.err")" -eq 2 ] || fail "not one valence line per run"
 grep -q "FCVT valence optimisation: V6% [0-9.]* before, [0-9.]* after; " "$log" || fail "no valence figures"
 [ "$(grep -c "^LOG: 2 FCVT density: from curvature, gradation 1" "$log.err")" -eq 1 ] || fail "the curvature density is not logged once"
-grep -Eq "FCVT field: extrinsic 6-RoSy; on (the input|the optimisation surface, a simplified copy of the input) \([0-9]+ faces\): [0-9]+ singularities, index sum -?[0-9]+ \(indices in sixths of a turn; with 5 boundary loops it need not be 6 x the Euler characteristic \(6 x -3 = -18\)\)" "$log" \
+grep -Eq "FCVT field: extrinsic 6-RoSy; on (the input|the optimisation surface, a simplified copy of the input) \([0-9]+ faces\): [0-9]+ singularities, index sum -?[0-9]+ \(indices in sixths of a turn; with [0-9]+ boundary loops it need not be 6 x the Euler characteristic \(6 x -?[0-9]+ = -?[0-9]+\)\)" "$log" \
   || fail "the index sum is not explained"
+# Issue 32: at 300 vertices bunny's small holes (under 2 edge lengths across) are closed, and said.
+grep -Eq "FCVT warning: [0-9]+ holes under 2 edge lengths across closed \([0-9.]+ % of the surface's area added\)" "$log" \
+  || fail "the closed holes are not in the log"
 grep -Eq "FCVT metrics: .*, d_boundary [0-9.e-]+ \(of the input diagonal\), boundary vertices of valence 4: [0-9.]+%" "$log" \
   || fail "no boundary figures for the bunny"
 grep -Eq "FCVT quality: .*triangles with an angle under 30 deg [0-9.e-]+%, over 90 deg [0-9.e-]+%" "$log" || fail "no angle figures in words"
