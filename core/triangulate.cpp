@@ -40,12 +40,17 @@ bool isZeroArea(const TriMesh& mesh, const Face& t)
     return (scaledCross(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], exponent).array() == 0.0).all();
 }
 
-//! The polygon in the plane of its Newell normal, counter-clockwise; empty when it has no plane.
+//! The polygon in the plane of its Newell normal, counter-clockwise; empty when it has no plane
+//! (all corners on a line, or a corner not finite).
 //! Relative to the first corner and scaled by a power of two (exact): no overflow at 1e300, and
 //! dropping an axis is exact, so the exact tests decide for the projected polygon itself.
 std::vector<Point2> projectToPlane(const std::vector<Vec3>& points, const std::vector<int>& corners)
 {
     const int n = static_cast<int>(corners.size());
+    // A non-finite corner has no plane: the exact predicates below would run without end on it
+    // (fuzz_read_mesh: a PLY quad with a -inf corner, before the reader refused the vertex).
+    for (int c : corners)
+        if (!points[c].allFinite()) return {};
     const Vec3& origin = points[corners[0]];
     double extent = 0;
     for (int c : corners) extent = std::max(extent, (points[c] - origin).cwiseAbs().maxCoeff());

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -331,6 +333,21 @@ TEST(WorkingFrame, SameAsThePlainFormulaWhereDoublesSufficeAndFiniteAtAnyScale)
         InputReport report;
         prepareInput(m, report);  // no face of a tiny model taken for a zero-area one
         EXPECT_EQ(report.removedDegenerateFaces, 0);
+    }
+}
+
+// fuzz_read_mesh found a PLY quad with a -inf corner that kept the exact segment tests busy past
+// the fuzzer's 20 s limit (the reader refuses the vertex only after its faces are read). A corner
+// that is not finite has no plane: the fan, at once, said as not simple.
+TEST(Triangulate, NonFiniteCornerGetsTheFanAtOnce)
+{
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    for (const Vec3& bad : {Vec3(-1, -inf, -64), Vec3(nan, 0, 0), Vec3(inf, inf, inf)}) {
+        const std::vector<Vec3> points = {Vec3(-1, -1, -1), Vec3(1, -1, -1), bad, Vec3(1, 1, 1.25), Vec3(-1, 1, 1)};
+        std::vector<Face> faces;
+        EXPECT_EQ(triangulatePolygon(points, {0, 1, 2, 3, 4}, faces), PolygonShape::NotSimple);
+        EXPECT_EQ(faces.size(), 3u);
+        for (const Face& f : faces) EXPECT_EQ(f[0], 0);
     }
 }
 
