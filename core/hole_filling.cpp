@@ -59,12 +59,6 @@ std::vector<double> pieceExtents(const TriMesh& mesh)
     return extent;
 }
 
-double triangleArea(const TriMesh& mesh, const Face& f)
-{
-    const Vec3& a = mesh.vertices[size_t(f[0])];
-    return 0.5 * (mesh.vertices[size_t(f[1])] - a).cross(mesh.vertices[size_t(f[2])] - a).norm();
-}
-
 }  // namespace
 
 HoleFillReport closeSmallHoles(TriMesh& mesh, double maxAcross)
@@ -105,7 +99,7 @@ HoleFillReport closeSmallHoles(TriMesh& mesh, double maxAcross)
         }
         for (const Face& f : patch) {
             for (int k = 0; k < 3; ++k) edges.insert(edgeKey(f[size_t(k)], f[size_t((k + 1) % 3)]));
-            report.area += triangleArea(mesh, f);
+            report.area += triangleArea(mesh.vertices[size_t(f[0])], mesh.vertices[size_t(f[1])], mesh.vertices[size_t(f[2])]);
             mesh.faces.push_back(f);
         }
         ++report.closed;
