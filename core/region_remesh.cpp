@@ -67,6 +67,7 @@ RemeshParams pieceParams(const RemeshParams& params, const RegionSubmesh& region
     RemeshParams p = params;
     p.vertexCount = std::clamp(int(std::lround(count)), kMinVertexCount, kMaxVertexCount);
     p.closeHolesUnder = 0;  // the piece's border is the seam with the kept faces: it stays open
+    p.exactCount = true;    // the pieces split the vertex count between them by area
     if (params.density == DensitySource::Uniform && !mu.empty()) {
         p.density = DensitySource::PerVertex;
         p.vertexDensity = std::move(mu);

@@ -124,6 +124,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     placeSamples(run);
     optimiseSamples(run);
     extractMesh(run);
+    remeshThinPartsAgain(run);
     optimiseValence(run);
     projectOnInput(run);
     attachOutputField(run);

@@ -6,6 +6,7 @@
 #include "metrics.h"
 #include "progress.h"
 #include "repair.h"
+#include "thin_parts.h"
 #include "valence.h"
 
 #include <array>
@@ -149,6 +150,11 @@ struct RemeshParams {
     //! 0 keeps every hole (CLI --keep-holes). 2: the output's cells cannot follow a border that
     //! small (issue 32: "holes smaller than about two edge lengths across are closed").
     double closeHolesUnder = 2.0;
+    //! Keep the vertex count as asked even where the surface is thinner than the edge length
+    //! (CLI --exact-count). false: the vertex density is raised there, locally, so that the RDT
+    //! keeps the shells closed with their genus (thin_parts.h; RemeshResult::thinParts).
+    bool exactCount = false;
+    ThinPartParams thinParts;
 };
 
 //! How a front end names the parameters in its messages: the CLI by its options
@@ -211,6 +217,14 @@ struct RemeshResult {
     //! Faces of the surface the optimisation ran on: the input's (after repair) or its coarser
     //! copy's (RemeshParams::optimisationFacesPerSample).
     int optimisationFaces = 0;
+    //! Vertices added for thin parts (RemeshParams::exactCount) and where: `added` > 0 when the
+    //! vertex count was raised beyond the one asked for.
+    struct ThinParts {
+        int added = 0;        //!< samples beyond the vertex count asked for
+        int faces = 0;        //!< faces of the optimisation surface thinner than the edge length allows
+        double thinnest = 0;  //!< the smallest thickness measured, in input units (0: none thin)
+        bool capped = false;  //!< ThinPartParams::maxVertexFactor limited them
+    } thinParts;
 };
 
 //! The mesh remesh() computed the field and its singularities on, for a log or report next to

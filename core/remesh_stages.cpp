@@ -207,10 +207,6 @@ RemeshRun::RemeshRun(const TriMesh& input_, const RemeshParams& params_, const P
 
 namespace {
 
-//! At the working scale the mean cell has area 1: an equilateral triangle mesh with one vertex
-//! per unit of area has edges sqrt(2 / sqrt(3)) long.
-const double kWorkingEdgeLength = std::sqrt(2.0 / std::sqrt(3.0));
-
 void closeHoles(RemeshRun& run)
 {
     const double under = run.params.closeHolesUnder;
@@ -306,10 +302,7 @@ void chooseDensity(RemeshRun& run)
     const bool curvature = p.density == DensitySource::Curvature && p.gradation > 0;
     if (!curvature && p.density != DensitySource::PerVertex) return;
     const TriMesh& surface = run.optSurface();
-    // Uniform target edge length at the working scale: unit-area cells of a regular
-    // triangulation, sqrt(2 / sqrt(3)).
-    const double edgeLength = std::sqrt(2 / std::sqrt(3.0));
-    std::vector<double> mu = curvature ? curvatureDensity(surface, p.gradation, edgeLength)
+    std::vector<double> mu = curvature ? curvatureDensity(surface, p.gradation, kWorkingEdgeLength)
                                        : densityOnSurface(p.vertexDensity, run.optIndex, surface.vertexCount());
     normaliseDensity(surface, mu);
     run.rho = faceDensity(surface, mu);
@@ -334,9 +327,12 @@ void setUpEnergy(RemeshRun& run)
         run.lloydSteps + 1.1 * (p.cvtIterations + p.fcvtIterations) + (constrained ? p.boundaryIterations : 0) + 2;
     // The energy's diagram structures and the surface's closest-point tree are independent and
     // serial: built side by side.
+    const bool treeBuilt = run.tree != nullptr;  // by chooseDensity's thickness measurement
     sideBySide(
-        true, [&] { run.energy = std::make_unique<EnergyFunction>(surface, rho); },
-        [&] { run.tree = std::make_unique<ClosestPointTree>(surface); });
+        !treeBuilt, [&] { run.energy = std::make_unique<EnergyFunction>(surface, rho); },
+        [&] {
+            if (!treeBuilt) run.tree = std::make_unique<ClosestPointTree>(surface);
+        });
     run.energy->onEvaluation = [&run](const EnergyValue& value) { onEvaluation(run, value); };
 }
 
@@ -387,7 +383,7 @@ void placeSamples(RemeshRun& run)
             run.result.lattice.spacing /= run.frame.scale;  // reported in input units
             run.fieldHierarchy = FieldHierarchyLevels{};
         } else if (p.initialSamples.empty()) {
-            run.seeds = sampleSurface(run.optSurface(), p.vertexCount, p.seed, run.rho);  // uniform when rho is empty
+            run.seeds = sampleSurface(run.optSurface(), run.sampleCount, p.seed, run.rho);  // uniform when rho is empty
         } else {
             run.seeds.clear();
             for (const Vec3& x : p.initialSamples) run.seeds.push_back(run.frame.toWork(x));
@@ -397,6 +393,8 @@ void placeSamples(RemeshRun& run)
 
 void optimiseSamples(RemeshRun& run)
 {
+    run.optimisationWarnings = run.result.warnings.size();
+    run.reseededSamples = 0;  // counted per pass (remeshThinPartsAgain runs a second one)
     const RemeshParams& p = run.params;
     EnergyFunction& energy = *run.energy;
     try {
@@ -455,6 +453,7 @@ void extractMesh(RemeshRun& run)
         if (run.result.mesh.faces.empty())
             throw SolverError(std::to_string(run.sampleCount) + " vertices are too few for this surface: they form no " +
                               "triangle on it (it is thinner than the edge length everywhere); use more vertices");
+        run.roles.clear();
         for (int seed : rdt.seedOfVertex)
             run.roles.push_back(size_t(seed) < run.sampleRoles.size() ? roleOf(run.sampleRoles[size_t(seed)]) : VertexRole::Free);
         run.vertexFaceHints = std::move(rdt.faceOfVertex);

@@ -15,6 +15,7 @@
 #include "working_frame.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
@@ -23,6 +24,10 @@
 namespace fieldcvt {
 
 using Clock = std::chrono::steady_clock;
+
+//! At the working scale the mean cell has area 1: an equilateral triangle mesh with one vertex
+//! per unit of area has edges sqrt(2 / sqrt(3)) long.
+inline const double kWorkingEdgeLength = std::sqrt(2.0 / std::sqrt(3.0));
 
 double secondsSince(Clock::time_point start);
 
@@ -69,7 +74,9 @@ struct RemeshRun {
     RemeshResult& result;
     Pipeline pipeline;
     const Clock::time_point start;
-    const int sampleCount;  //!< the output's vertex budget (vertexCount, or the initial samples)
+    //! The output's vertex budget: vertexCount, or the initial samples; chooseDensity raises it
+    //! for thin parts (RemeshParams::exactCount).
+    int sampleCount;
 
     // prepareSurface: the clean (repaired) input in the working frame (§5).
     TriMesh surface;
@@ -104,6 +111,7 @@ struct RemeshRun {
     std::vector<Vec3> seeds;
     std::vector<SampleConstraint> sampleRoles;
     int reseedCalls = 0, reseededSamples = 0;
+    size_t optimisationWarnings = 0;  //!< RemeshResult::warnings' size as optimiseSamples started
     // extractMesh, for optimiseValence.
     std::vector<VertexRole> roles;     //!< per output vertex
     std::vector<int> vertexFaceHints;  //!< per output vertex, the face of its closest point (a query hint)
@@ -129,6 +137,12 @@ void placeSamples(RemeshRun& run);
 void optimiseSamples(RemeshRun& run);
 //! The restricted Delaunay triangulation of the samples: the output mesh.
 void extractMesh(RemeshRun& run);
+//! Issue 32, item 2: when the RDT's topology (genus, boundary loops, components) differs from
+//! the input's, the density is raised where the surface is thinner than the edge length
+//! (thin_parts.h), sampleCount with it, and the samples are placed, optimised and triangulated
+//! again; the second mesh is kept when its topology is nearer the input's, with a warning and
+//! RemeshResult::thinParts. Not with RemeshParams::exactCount or initial samples.
+void remeshThinPartsAgain(RemeshRun& run);
 //! §4.4: flips, collapses, splits towards valence 6, then a relaxation.
 void optimiseValence(RemeshRun& run);
 //! From the coarse copy back onto the input surface.

@@ -1,0 +1,167 @@
+// core/thin_parts.h: the local thickness (medial balls) and the density thin parts need, and
+// remesh()'s second pass where the first one's topology differs from the input's (issue 32 item 2).
+#include "closest_point.h"
+#include "metrics.h"
+#include "remesh.h"
+#include "test_meshes.h"
+#include "thin_parts.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace fieldcvt {
+namespace {
+
+using testmesh::torus;
+
+constexpr double kPiValue = 3.14159265358979323846;
+
+//! A ring (major radius 1) whose tube has radius `thick` except in a neck around angle 0, where
+//! it narrows to `neck`: genus 1, thin in one place only.
+TriMesh neckedRing(int n, int m, double thick, double neck)
+{
+    TriMesh t;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const double u = 2 * kPiValue * i / n, v = 2 * kPiValue * j / m;
+            const double fromNeck = std::abs(std::remainder(u, 2 * kPiValue));
+            const double r = fromNeck > 0.6 ? thick : neck + (thick - neck) * (fromNeck / 0.6) * (fromNeck / 0.6);
+            t.vertices.emplace_back((1 + r * std::cos(v)) * std::cos(u), (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+        }
+    auto id = [n, m](int i, int j) { return ((i + n) % n) * m + (j + m) % m; };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            t.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            t.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return t;
+}
+
+//! The thickness measured at face f's centroid on the given side.
+double thicknessAtFace(const TriMesh& mesh, const ClosestPointTree& tree, int f, int side, double largest)
+{
+    const Vec3 centroid =
+        (mesh.vertices[mesh.faces[f][0]] + mesh.vertices[mesh.faces[f][1]] + mesh.vertices[mesh.faces[f][2]]) / 3.0;
+    return localThickness(tree, centroid, faceNormal(mesh, f).normalized(), f, side, largest, 150);
+}
+
+TEST(ThinParts, ATubesThicknessIsItsDiameterInsideAndNothingOutside)
+{
+    const TriMesh tube = torus(96, 24, 1.0, 0.1);  // outward normals
+    const ClosestPointTree tree(tube);
+    for (int f = 0; f < tube.faceCount(); f += 37) {
+        // Inside: the tube's diameter, less the facets' sag (cos(pi / 24) of the radius).
+        EXPECT_NEAR(thicknessAtFace(tube, tree, f, -1, 1.0), 0.2, 0.01) << "face " << f;
+        // Outside, within 0.5 of the surface: no ball touches it again.
+        EXPECT_EQ(thicknessAtFace(tube, tree, f, +1, 1.0), std::numeric_limits<double>::infinity()) << "face " << f;
+    }
+    // A ball larger than `largest` is not looked for: nothing is thinner than 0.1 here.
+    EXPECT_EQ(thicknessAtFace(tube, tree, 0, -1, 0.1), std::numeric_limits<double>::infinity());
+}
+
+TEST(ThinParts, TheHoleOfARingCountsFromOutsideAndACreaseDoesNot)
+{
+    // The ring's hole, 2 (1 - 0.3) = 1.4 across at the inner equator, seen from outside.
+    const TriMesh ring = torus(96, 24, 1.0, 0.3);
+    const ClosestPointTree tree(ring);
+    int innerFaces = 0;
+    for (int f = 0; f < ring.faceCount(); ++f) {
+        const Vec3 c =
+            (ring.vertices[ring.faces[f][0]] + ring.vertices[ring.faces[f][1]] + ring.vertices[ring.faces[f][2]]) / 3.0;
+        if (std::hypot(c.x(), c.y()) > 0.72 || std::abs(c.z()) > 0.05) continue;  // the inner equator
+        ++innerFaces;
+        EXPECT_NEAR(thicknessAtFace(ring, tree, f, +1, 4.0), 1.4, 0.03) << "face " << f;
+    }
+    EXPECT_GT(innerFaces, 0);
+    // A cube's faces meet at right angles: a ball inside one corner is stopped by the next face
+    // at 90 degrees, a crease, not a thin part, and its thickness is the cube's (1).
+    const TriMesh cube = [] {
+        TriMesh c;
+        for (int i = 0; i < 8; ++i) c.vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+        c.faces = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                   {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+        return c;
+    }();
+    const ClosestPointTree cubeTree(cube);
+    for (int f = 0; f < cube.faceCount(); ++f) {
+        const double t = thicknessAtFace(cube, cubeTree, f, -1, 4.0);
+        EXPECT_TRUE(t == std::numeric_limits<double>::infinity() || std::abs(t - 1.0) < 1e-6) << "face " << f << ": " << t;
+    }
+}
+
+TEST(ThinParts, DensityOnlyWhereThinGradedAndCapped)
+{
+    const TriMesh ring = neckedRing(240, 16, 0.25, 0.03);
+    const ClosestPointTree tree(ring);
+    ThinPartParams params;
+    const ThinPartDensity thin = thinPartDensity(ring, tree, 0.2, params);
+    ASSERT_EQ(thin.mu.size(), size_t(ring.faceCount()));
+    EXPECT_GT(thin.thinFaces, 0);
+    EXPECT_NEAR(thin.thinnest, 0.06, 0.01);
+    EXPECT_GT(thin.vertexFactor, 1.0);
+    EXPECT_LE(thin.vertexFactor, params.maxVertexFactor + 1e-9);
+    double neckMu = 0, farMu = 0;
+    for (int f = 0; f < ring.faceCount(); ++f) {
+        const Vec3 c = ring.vertices[ring.faces[f][0]];
+        const double u = std::abs(std::atan2(c.y(), c.x()));
+        EXPECT_GE(thin.mu[f], 1.0);
+        EXPECT_LE(thin.mu[f], params.maxEdgeRatio * params.maxEdgeRatio * (1 + 1e-9));
+        if (u < 0.02) neckMu = std::max(neckMu, thin.mu[f]);
+        if (u > 2.0) farMu = std::max(farMu, thin.mu[f]);
+    }
+    EXPECT_GT(neckMu, 4.0);  // edges at least twice shorter in the neck
+    EXPECT_EQ(farMu, 1.0);   // the thick part as it was
+    // A thick ring needs nothing.
+    const TriMesh thick = torus(64, 16, 1.0, 0.3);
+    EXPECT_TRUE(thinPartDensity(thick, ClosestPointTree(thick), 0.2, params).mu.empty());
+    // The cap: asked for edges far below the thickness everywhere, the factor stays at the cap.
+    params.edgePerThickness = 0.01;
+    const ThinPartDensity capped = thinPartDensity(thick, ClosestPointTree(thick), 0.2, params);
+    EXPECT_TRUE(capped.capped);
+    EXPECT_NEAR(capped.vertexFactor, params.maxVertexFactor, 1e-6);
+}
+
+TEST(ThinParts, RemeshAddsVerticesWhereTheNeckWouldTearAndKeepsTheGenus)
+{
+    const TriMesh ring = neckedRing(240, 16, 0.25, 0.03);
+    RemeshParams params;
+    params.vertexCount = 150;
+    params.threads = 2;
+    const RemeshResult result = remesh(ring, params);
+    const TopologySummary out = computeTopology(result.mesh);
+    EXPECT_EQ(out.genus, 1);
+    EXPECT_EQ(out.boundaryLoops, 0);
+    EXPECT_EQ(out.components, 1);
+    EXPECT_GT(result.thinParts.added, 0);
+    EXPECT_LE(result.mesh.vertexCount(), 2 * params.vertexCount);
+    EXPECT_GE(result.metrics.thetaMin, 15.0);
+    bool warned = false;
+    for (const std::string& w : result.warnings)
+        warned |= w.find("vertices added where the surface is thinner") != std::string::npos;
+    EXPECT_TRUE(warned);
+    // --exact-count: the count asked for, and the neck is lost.
+    params.exactCount = true;
+    const RemeshResult exact = remesh(ring, params);
+    EXPECT_EQ(exact.thinParts.added, 0);
+    EXPECT_NE(computeTopology(exact.mesh).genus, 1);
+    EXPECT_LE(std::abs(exact.mesh.vertexCount() - params.vertexCount), params.vertexCount / 10);
+}
+
+TEST(ThinParts, ModelsWhoseTopologyComesOutRightAreNotTouched)
+{
+    const TriMesh ring = torus(64, 16, 1.0, 0.3);
+    RemeshParams params;
+    params.vertexCount = 400;
+    params.threads = 2;
+    const RemeshResult first = remesh(ring, params);
+    params.exactCount = true;
+    const RemeshResult exact = remesh(ring, params);
+    EXPECT_EQ(first.thinParts.added, 0);
+    EXPECT_EQ(first.mesh.vertices, exact.mesh.vertices);
+    EXPECT_EQ(first.mesh.faces, exact.mesh.faces);
+}
+
+}  // namespace
+}  // namespace fieldcvt
