@@ -223,7 +223,7 @@ struct RemeshResult {
         int added = 0;        //!< samples beyond the vertex count asked for
         int faces = 0;        //!< faces of the optimisation surface thinner than the edge length allows
         double thinnest = 0;  //!< the smallest thickness measured, in input units (0: none thin)
-        bool capped = false;  //!< ThinPartParams::maxVertexFactor limited them
+        bool capped = false;  //!< the samples reached ThinPartParams::maxVertexFactor × the count asked for
     } thinParts;
 };
 

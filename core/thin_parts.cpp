@@ -1,6 +1,7 @@
 #include "thin_parts.h"
 
 #include "mesh_edges.h"
+#include "point_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +71,28 @@ double vertexFactor(const std::vector<double>& mu, const std::vector<double>& ar
     return sum / totalArea;
 }
 
+//! Per face, whether its centroid is within focus.radius of a focus point; empty = all faces.
+std::vector<char> facesInFocus(const TriMesh& mesh, const ThinPartFocus& focus)
+{
+    if (focus.points.empty()) return {};
+    PointCloud cloud{&focus.points};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    tree.buildIndex();
+    std::vector<char> in(mesh.faces.size(), 0);
+#pragma omp parallel for schedule(static)
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+        const Vec3 c =
+            (mesh.vertices[mesh.faces[f][0]] + mesh.vertices[mesh.faces[f][1]] + mesh.vertices[mesh.faces[f][2]]) / 3.0;
+        uint32_t index = 0;
+        double squared = 0;
+        nanoflann::KNNResultSet<double, uint32_t> nearest(1);
+        nearest.init(&index, &squared);
+        tree.findNeighbors(nearest, c.data(), KnnSearchParams());
+        in[f] = squared <= focus.radius * focus.radius;
+    }
+    return in;
+}
+
 }  // namespace
 
 double localThickness(const ClosestPointTree& tree, const Vec3& p, const Vec3& normal, int face, int side, double largest,
@@ -108,7 +131,7 @@ double localThickness(const ClosestPointTree& tree, const Vec3& p, const Vec3& n
 }
 
 ThinPartDensity thinPartDensity(const TriMesh& surface, const ClosestPointTree& tree, double edgeLength,
-                                const ThinPartParams& params)
+                                const ThinPartParams& params, const ThinPartFocus& focus)
 {
     ThinPartDensity out;
     const int faceCount = surface.faceCount();
@@ -116,8 +139,10 @@ ThinPartDensity thinPartDensity(const TriMesh& surface, const ClosestPointTree& 
     // edgePerThickness × their thickness.
     const double thinUnder = edgeLength / params.edgePerThickness;
     std::vector<double> thickness(faceCount, kInfinity);
+    const std::vector<char> inFocus = facesInFocus(surface, focus);
 #pragma omp parallel for schedule(dynamic, 256)
     for (int f = 0; f < faceCount; ++f) {
+        if (!inFocus.empty() && !inFocus[f]) continue;
         const Vec3 n = faceNormal(surface, f);
         const double length = n.norm();
         if (!(length > 0) || !std::isfinite(length)) continue;  // no plane: its neighbours decide

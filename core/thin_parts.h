@@ -59,9 +59,16 @@ struct ThinPartDensity {
 double localThickness(const ClosestPointTree& tree, const Vec3& p, const Vec3& normal, int face, int side, double largest,
                       double minObjectAngleDegrees);
 
+//! Where to look for thin parts: faces whose centroid lies within `radius` of one of `points`
+//! (e.g. where an RDT tore); no points = everywhere.
+struct ThinPartFocus {
+    std::vector<Vec3> points;
+    double radius = 0;
+};
+
 //! The density that thin parts need on `surface` (at the working scale, where the uniform edge
 //! length is `edgeLength`). `tree` is the surface's.
 ThinPartDensity thinPartDensity(const TriMesh& surface, const ClosestPointTree& tree, double edgeLength,
-                                const ThinPartParams& params = {});
+                                const ThinPartParams& params = {}, const ThinPartFocus& focus = {});
 
 }  // namespace fieldcvt
