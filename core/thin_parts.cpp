@@ -2,6 +2,7 @@
 
 #include "mesh_edges.h"
 #include "point_tree.h"
+#include "region.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,10 @@ namespace fieldcvt {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+//! Two points of one border loop bound a slot (a thin strip of surface between them) when they
+//! are more than this many times as far apart along the loop as across: a round hole's opposite
+//! points are pi / 2 apart along it.
+constexpr double kSlotArcRatio = 3;
 //! Shrinking-ball steps: each step at least halves the radius in practice; 40 is far beyond what
 //! a ball needs from the edge length down to a face's rounding.
 constexpr int kMaxBallSteps = 40;
@@ -93,6 +98,52 @@ std::vector<char> facesInFocus(const TriMesh& mesh, const ThinPartFocus& focus)
     return in;
 }
 
+//! Per vertex of `mesh`, the width of the strip of surface between its border and another
+//! border nearer than `largest`: the distance to the nearest border vertex of another loop, or
+//! of the same loop but more than kSlotArcRatio times as far along it as across (a slot); +inf
+//! elsewhere. A strip narrower than an edge length between two holes is a thin part the medial
+//! balls do not see: the surface there is a sheet, not a solid.
+std::vector<double> borderStripWidths(const TriMesh& mesh, double largest)
+{
+    std::vector<double> width(mesh.vertices.size(), kInfinity);
+    const std::vector<std::vector<int>> loops = borderLoops(mesh);
+    std::vector<Vec3> points;
+    std::vector<int> vertexOf, loopOf;
+    std::vector<double> arcOf, loopLength;
+    for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
+        double arc = 0;
+        const std::vector<int>& loop = loops[l];
+        for (size_t i = 0; i < loop.size(); ++i) {
+            points.push_back(mesh.vertices[loop[i]]);
+            vertexOf.push_back(loop[i]);
+            loopOf.push_back(l);
+            arcOf.push_back(arc);
+            arc += (mesh.vertices[loop[(i + 1) % loop.size()]] - mesh.vertices[loop[i]]).norm();
+        }
+        loopLength.push_back(arc);
+    }
+    if (points.empty()) return width;
+    PointCloud cloud{&points};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    tree.buildIndex();
+    std::vector<std::pair<double, uint32_t>> found;
+    for (size_t i = 0; i < points.size(); ++i) {
+        found.clear();
+        WithinRadius within(largest * largest, found);
+        tree.findNeighbors(within, points[i].data(), KnnSearchParams());
+        for (const auto& [squared, j] : found) {
+            const double across = std::sqrt(squared);
+            if (!(across > 0)) continue;  // the vertex itself, or a pinch
+            if (loopOf[j] == loopOf[i]) {
+                const double along = std::abs(arcOf[j] - arcOf[i]);
+                if (std::min(along, loopLength[loopOf[i]] - along) <= kSlotArcRatio * across) continue;
+            }
+            width[vertexOf[i]] = std::min(width[vertexOf[i]], across);
+        }
+    }
+    return width;
+}
+
 }  // namespace
 
 double localThickness(const ClosestPointTree& tree, const Vec3& p, const Vec3& normal, int face, int side, double largest,
@@ -153,6 +204,12 @@ ThinPartDensity thinPartDensity(const TriMesh& surface, const ClosestPointTree& 
                 thinnest = std::min(thinnest, localThickness(tree, p, unit, f, side, thinUnder, params.minObjectAngleDegrees));
         thickness[f] = thinnest;
     }
+    // Strips of surface between borders (holes closer than an edge length): the faces at their
+    // border vertices.
+    const std::vector<double> strip = borderStripWidths(surface, thinUnder);
+    for (int f = 0; f < faceCount; ++f)
+        if (inFocus.empty() || inFocus[f])
+            for (int v : surface.faces[f]) thickness[f] = std::min(thickness[f], strip[v]);
     std::vector<double> length(faceCount, kInfinity);
     for (int f = 0; f < faceCount; ++f) {
         if (thickness[f] < thinUnder) {

@@ -48,15 +48,13 @@ add_test(NAME robustness_reliability3
 set_tests_properties(robustness_reliability3 PROPERTIES LABELS robustness TIMEOUT 300)
 
 # Issue 32, item 1: well-shaped triangles, borders included, on the real-world meshes of
-# ../shared/realworld (when that folder is there). many_small_holes.ply (0.6 / 1.0 % of its
-# triangles under 30 degrees, on thin strips between the holes it keeps) joins the list when it
-# passes.
+# ../shared/realworld (when that folder is there).
 set(_fcvt_realworld "${PROJECT_SOURCE_DIR}/../shared/realworld")
 if(EXISTS "${_fcvt_realworld}/README.md")
   add_test(NAME robustness_realworld_triangles
     COMMAND Python3::Interpreter "${_fcvt_rob_dir}/check_realworld_triangles.py" $<TARGET_FILE:fcvt> "${_fcvt_realworld}"
             "${_fcvt_rob_work}/realworld_triangles" adis16480.stl casting.off conrod.stl greek_helmet.obj idler_riser.stl
-            lato180.ply non_manif_hole.ply tray_bottom.stl)
+            lato180.ply many_small_holes.ply non_manif_hole.ply tray_bottom.stl)
   set_tests_properties(robustness_realworld_triangles PROPERTIES LABELS robustness TIMEOUT 600)
   # Item 2 where it holds: casting.off (closed, genus 9) torn into 10 holes at N = V/4 comes back
   # closed with its genus through the thin parts' vertices. Its N = V/8, tray_bottom.stl and

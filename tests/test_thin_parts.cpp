@@ -123,6 +123,41 @@ TEST(ThinParts, DensityOnlyWhereThinGradedAndCapped)
     EXPECT_NEAR(capped.vertexFactor, params.maxVertexFactor, 1e-6);
 }
 
+//! A unit grid (40 x 40 cells) without the cells of two square holes, 8 cells wide, `gap`
+//! cells apart (centred in x, at mid-height).
+TriMesh gridWithTwoHoles(int gap)
+{
+    const TriMesh grid = testmesh::planeGrid(40, 1.0);
+    TriMesh out;
+    out.vertices = grid.vertices;
+    const int left = 20 - gap / 2 - 8, right = 20 + (gap + 1) / 2;
+    for (const Face& f : grid.faces) {
+        const Vec3 c = (grid.vertices[f[0]] + grid.vertices[f[1]] + grid.vertices[f[2]]) / 3.0;
+        const int i = int(c.x() * 40), j = int(c.y() * 40);
+        const bool inHole = j >= 16 && j < 24 && ((i >= left && i < left + 8) || (i >= right && i < right + 8));
+        if (!inHole) out.faces.push_back(f);
+    }
+    return out;
+}
+
+TEST(ThinParts, AStripBetweenTwoHolesIsThinAndTwoHolesFarApartAreNot)
+{
+    // Edges 0.1 long: a strip of one cell (0.025) between the holes is thin, one of 12 cells
+    // (0.3) is not, nor the strips to the outer border (0.15); the holes themselves (0.2 across)
+    // are not.
+    const TriMesh near = gridWithTwoHoles(1), far = gridWithTwoHoles(12);
+    const ThinPartDensity strip = thinPartDensity(near, ClosestPointTree(near), 0.1);
+    ASSERT_FALSE(strip.mu.empty());
+    EXPECT_NEAR(strip.thinnest, 0.025, 1e-9);
+    for (int f = 0; f < near.faceCount(); ++f) {
+        const Vec3 c =
+            (near.vertices[near.faces[f][0]] + near.vertices[near.faces[f][1]] + near.vertices[near.faces[f][2]]) / 3.0;
+        if (std::abs(c.x() - 0.5) < 0.01 && std::abs(c.y() - 0.5) < 0.05) EXPECT_GT(strip.mu[f], 4.0) << "face " << f;
+        if (c.y() < 0.1) EXPECT_EQ(strip.mu[f], 1.0) << "face " << f;
+    }
+    EXPECT_TRUE(thinPartDensity(far, ClosestPointTree(far), 0.1).mu.empty());
+}
+
 TEST(ThinParts, RemeshAddsVerticesWhereTheNeckWouldTearAndKeepsTheGenus)
 {
     const TriMesh ring = neckedRing(240, 16, 0.25, 0.03);
