@@ -54,8 +54,6 @@ constexpr int kDefaultMaxCrosses = 2000;
 constexpr const char* kRepair = "repair";
 //! Remeshing: remesh only the selected faces (region.h), the rest kept; default off.
 constexpr const char* kSelectedOnly = "selectedOnly";
-constexpr const char* kKeepHoles = "keepHoles";
-constexpr const char* kExactCount = "exactCount";
 //! Quality report: the layer d_RMS / d_H are measured against (itself = no distances).
 constexpr const char* kReferenceLayer = "referenceLayer";
 //! Name of the per-vertex Point3m attribute that holds a 6-RoSy field (representative d).

@@ -134,17 +134,6 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                               "where they are and the new faces meet them edge to edge. The target "
                               "vertices or edge length apply to the selected area; the new faces "
                               "are selected on the new layer."));
-        // Issue 32, at the end like every new parameter.
-        par.addParam(RichBool(kKeepHoles, false, parameterLabel(kKeepHoles),
-                              "Keep every hole open. Off: a hole under 2 target edge lengths across (a scan's "
-                              "small holes, which the output's cells cannot follow) is closed over its own "
-                              "border vertices before remeshing, counted in the log."));
-        par.addParam(RichBool(kExactCount, defaults.exactCount, parameterLabel(kExactCount),
-                              "Keep the target vertex count where the surface is thinner than the edge "
-                              "length. Off: when the output's genus, holes or pieces differ from the input's, "
-                              "vertices are added where walls, tubes and holes are thinner than the edge "
-                              "length (up to 1.9 times the count) and the remeshing runs again; the log says "
-                              "how many."));
         break;
     }
     case kField: {

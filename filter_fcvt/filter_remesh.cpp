@@ -100,8 +100,6 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallB
     inputs.featuresFromSelection = boolParam(par, kFeatureSelection, false);
     inputs.colorIrregular = boolParam(par, kColorIrregular, false);
     params.repair = boolParam(par, kRepair, defaults.repair);
-    if (boolParam(par, kKeepHoles, false)) params.closeHolesUnder = 0;
-    params.exactCount = boolParam(par, kExactCount, defaults.exactCount);
     inputs.selectedOnly = selectedOnly;
     return remeshFcvt(md, params, inputs, cb);
 }

@@ -43,8 +43,6 @@ constexpr ParameterLabel kParameterLabels[] = {
     {"referenceLayer", "Reference layer (distances)"},
     {"maxCrosses", "Crosses drawn (at most)"},
     {"selectedOnly", "Remesh only selected faces"},
-    {"keepHoles", "Keep small holes"},
-    {"exactCount", "Exact vertex count"},
     {"repair", "Repair the input"},
 };
 

@@ -22,10 +22,9 @@ rm -rf "$work/out"; mkdir -p "$work/out"
 server="$(stage_meshlab "$work/stage" "$plugin")"
 shipped="$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx"
 old="$FCVT_SOURCE_DIR/tests/meshlab/fcvt-remesh-13params.mlx"
-# The parameters added after that script (gradation, repair, selectedOnly, keepHoles, exactCount):
-# meshlabserver needs every one.
-added_lines="$(grep 'name="gradation"\|name="repair"\|name="selectedOnly"\|name="keepHoles"\|name="exactCount"' "$shipped")"
-[ "$(grep -c . <<<"$added_lines")" -eq 5 ] || fail "no gradation, repair, selectedOnly, keepHoles and exactCount in $shipped"
+# The parameters added after that script (gradation, repair, selectedOnly): meshlabserver needs every one.
+added_lines="$(grep 'name="gradation"\|name="repair"\|name="selectedOnly"' "$shipped")"
+[ "$(grep -c . <<<"$added_lines")" -eq 3 ] || fail "no gradation, repair and selectedOnly in $shipped"
 
 # filter_body MLX NAME=VALUE...: the <filter> element of MLX with those values.
 filter_body() {
@@ -119,30 +118,18 @@ run_meshlabserver "$server" "$work/out/lambda.txt" -i "$work/out/torus.off" -o "
 grep -q "FCVT: 'Field weight (lambda)' (lambda) must be a finite number >= 0, got -1" "$work/out/lambda.txt" \
   || fail "the lambda error does not name the dialog's label"
 
-# D. Issue 32 through the filter: the necked ring's neck tears at 150 vertices; by default vertices
-# are added there (said in the log) and the ring keeps its genus; exactCount keeps the count and
-# loses it; keepHoles keeps bunny's small holes open.
+# D. Issue 32 through the filter, as through the CLI: the necked ring's neck tears at 150 vertices;
+# vertices are added there (said in the log) and the ring keeps its genus. (The filter has no
+# parameter to keep the count: one more row would not fit 2020.09's dialog on a 1024-pixel
+# screen, meshlab_gui_field_dialog.)
 "$FCVT_SOURCE_DIR/tests/meshlab/obj2off.sh" "$FCVT_SOURCE_DIR/resources/necked_ring.obj" "$work/out/necked_ring.off"
-ring="$work/out/necked_ring.off"
-for exact in false true; do
-  { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
-    filter_body "$shipped" vertexCount=150 exactCount=$exact; echo '</FilterScript>'; } > "$work/out/ring-$exact.mlx"
-  run_meshlabserver "$server" "$work/out/ring-$exact.txt" -i "$ring" -o "$work/out/ring-$exact.ply" -s "$work/out/ring-$exact.mlx"
-  [ "$MLS_RC" -eq 0 ] || fail "the necked ring (exactCount $exact) failed ($MLS_RC)"
-  "$cli" metrics "$work/out/ring-$exact.ply" > "$work/out/ring-$exact.metrics"
-  genus="$(awk '$1 == "genus" {print $2}' "$work/out/ring-$exact.metrics")"
-  if [ "$exact" = false ]; then
-    grep -Eq "FCVT warning: [0-9]+ vertices added where the surface is thinner than the edge length" "$work/out/ring-$exact.txt" \
-      || fail "the added vertices are not in the log"
-    [ "$genus" = 1 ] || fail "the necked ring came back with genus $genus"
-  else
-    ! grep -q "vertices added where the surface is thinner" "$work/out/ring-$exact.txt" || fail "exactCount true added vertices"
-    [ "$genus" != 1 ] || echo "NOTE: the necked ring kept its genus at the exact count"
-  fi
-done
 { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
-  filter_body "$shipped" vertexCount=300 keepHoles=true; echo '</FilterScript>'; } > "$work/out/holes.mlx"
-run_meshlabserver "$server" "$work/out/holes.txt" -i "$FCVT_SOURCE_DIR/resources/bunny.ply" -o "$work/out/holes.ply" -s "$work/out/holes.mlx"
-[ "$MLS_RC" -eq 0 ] || fail "keepHoles true failed ($MLS_RC)"
-! grep -q "holes under 2 edge lengths across closed" "$work/out/holes.txt" || fail "keepHoles true closed holes"
+  filter_body "$shipped" vertexCount=150; echo '</FilterScript>'; } > "$work/out/ring.mlx"
+run_meshlabserver "$server" "$work/out/ring.txt" -i "$work/out/necked_ring.off" -o "$work/out/ring.ply" -s "$work/out/ring.mlx"
+[ "$MLS_RC" -eq 0 ] || fail "the necked ring failed ($MLS_RC)"
+grep -Eq "FCVT warning: [0-9]+ vertices added where the surface is thinner than the edge length" "$work/out/ring.txt" \
+  || fail "the added vertices are not in the log"
+"$cli" metrics "$work/out/ring.ply" > "$work/out/ring.metrics"
+genus="$(awk '$1 == "genus" {print $2}' "$work/out/ring.metrics")"
+[ "$genus" = 1 ] || fail "the necked ring came back with genus $genus"
 echo "PASS"
