@@ -327,7 +327,7 @@ void setUpEnergy(RemeshRun& run)
         run.lloydSteps + 1.1 * (p.cvtIterations + p.fcvtIterations) + (constrained ? p.boundaryIterations : 0) + 2;
     // The energy's diagram structures and the surface's closest-point tree are independent and
     // serial: built side by side.
-    const bool treeBuilt = run.tree != nullptr;  // by chooseDensity's thickness measurement
+    const bool treeBuilt = run.tree != nullptr;  // by the first pass (remeshThinPartsAgain runs this again)
     sideBySide(
         !treeBuilt, [&] { run.energy = std::make_unique<EnergyFunction>(surface, rho); },
         [&] {

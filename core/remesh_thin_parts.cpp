@@ -40,18 +40,8 @@ std::vector<Vec3> tornBorderPoints(const TriMesh& mesh, const std::vector<Segmen
     std::vector<Vec3> torn;
     const double limit = kWorkingEdgeLength * kWorkingEdgeLength;
     for (const Segment& edge : boundarySegments(mesh))
-        for (const Vec3& p : {edge.first, edge.second}) {
-            bool onBorder = false;
-            for (const Segment& s : surfaceBorder) {
-                double squared = 0;
-                closestPointOnSegment(p, s, &squared);
-                if (squared <= limit) {
-                    onBorder = true;
-                    break;
-                }
-            }
-            if (!onBorder) torn.push_back(p);
-        }
+        for (const Vec3& p : {edge.first, edge.second})
+            if (surfaceBorder.empty() || (closestPointOnSegments(p, surfaceBorder) - p).squaredNorm() > limit) torn.push_back(p);
     return torn;
 }
 

@@ -26,15 +26,18 @@ constexpr int kMaxBallSteps = 40;
 //! A ball whose closest surface point is this close to its radius (relative) is empty.
 constexpr double kEmptyBallTolerance = 1e-9;
 
+Vec3 faceCentroid(const TriMesh& mesh, int f)
+{
+    return (mesh.vertices[mesh.faces[f][0]] + mesh.vertices[mesh.faces[f][1]] + mesh.vertices[mesh.faces[f][2]]) / 3.0;
+}
+
 //! The points of face f whose thickness is measured: its centroid and the midpoints between it
 //! and each corner, so that a face larger than a thin part is not judged by its centre alone.
 std::array<Vec3, 4> probePoints(const TriMesh& mesh, int f)
 {
-    const Vec3& a = mesh.vertices[mesh.faces[f][0]];
-    const Vec3& b = mesh.vertices[mesh.faces[f][1]];
-    const Vec3& c = mesh.vertices[mesh.faces[f][2]];
-    const Vec3 centroid = (a + b + c) / 3.0;
-    return {centroid, 0.5 * (centroid + a), 0.5 * (centroid + b), 0.5 * (centroid + c)};
+    const Vec3 centroid = faceCentroid(mesh, f);
+    return {centroid, 0.5 * (centroid + mesh.vertices[mesh.faces[f][0]]), 0.5 * (centroid + mesh.vertices[mesh.faces[f][1]]),
+            0.5 * (centroid + mesh.vertices[mesh.faces[f][2]])};
 }
 
 //! The wanted edge length of every face made graded: along a path of faces it grows by at most
@@ -43,8 +46,7 @@ void gradeEdgeLengths(const TriMesh& mesh, double gradation, std::vector<double>
 {
     const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
     std::vector<Vec3> centroid(mesh.faces.size());
-    for (int f = 0; f < mesh.faceCount(); ++f)
-        centroid[f] = (mesh.vertices[mesh.faces[f][0]] + mesh.vertices[mesh.faces[f][1]] + mesh.vertices[mesh.faces[f][2]]) / 3.0;
+    for (int f = 0; f < mesh.faceCount(); ++f) centroid[f] = faceCentroid(mesh, f);
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
     for (int f = 0; f < mesh.faceCount(); ++f)
@@ -86,8 +88,7 @@ std::vector<char> facesInFocus(const TriMesh& mesh, const ThinPartFocus& focus)
     std::vector<char> in(mesh.faces.size(), 0);
 #pragma omp parallel for schedule(static)
     for (int f = 0; f < mesh.faceCount(); ++f) {
-        const Vec3 c =
-            (mesh.vertices[mesh.faces[f][0]] + mesh.vertices[mesh.faces[f][1]] + mesh.vertices[mesh.faces[f][2]]) / 3.0;
+        const Vec3 c = faceCentroid(mesh, f);
         uint32_t index = 0;
         double squared = 0;
         nanoflann::KNNResultSet<double, uint32_t> nearest(1);
