@@ -6,7 +6,9 @@
 
 #include "mesh_io.h"
 #include "metrics.h"
+#include "part_coverage.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -23,12 +25,30 @@ void printUsage()
         "\n"
         "Options:\n"
         "  --ref INPUT   also measure d_rms and d_h, the RMS and Hausdorff distances to INPUT\n"
-        "                (fractions of INPUT's bounding-box diagonal); without it they are null\n"
+        "                (fractions of INPUT's bounding-box diagonal; without it they are null),\n"
+        "                and INPUT's parts (components with 0.5 %% of its area or more): parts,\n"
+        "                part_gap (largest distance from a part to MESH, in MESH's mean edge\n"
+        "                lengths), part_pieces (most components of MESH one part became),\n"
+        "                small_parts and small_parts_area_pct (the components under 0.5 %%)\n"
         "  --json        print the metrics as one JSON object (the keys of 'fcvt remesh --report')\n"
         "  -h, --help    show this help\n");
 }
 
-void printTable(const std::string& path, const TriMesh& mesh, const nlohmann::ordered_json& metrics, const TopologySummary& t)
+nlohmann::ordered_json partsJson(const PartCoverage& c)
+{
+    nlohmann::ordered_json j = nlohmann::ordered_json::object();
+    j["parts"] = static_cast<int>(c.parts.size());
+    // An output without faces leaves the gap infinite, which JSON cannot hold: null.
+    j["part_gap"] = std::isfinite(c.largestGap) ? nlohmann::ordered_json(c.largestGap) : nlohmann::ordered_json();
+    j["part_pieces"] = c.mostPieces;
+    j["small_parts"] = c.smallParts;
+    j["small_parts_area_pct"] = 100.0 * c.smallAreaFraction;
+    j["small_parts_gap"] = std::isfinite(c.smallPartsGap) ? nlohmann::ordered_json(c.smallPartsGap) : nlohmann::ordered_json();
+    return j;
+}
+
+void printTable(const std::string& path, const TriMesh& mesh, const nlohmann::ordered_json& metrics, const TopologySummary& t,
+                const nlohmann::ordered_json& parts)
 {
     std::printf("%-14s %s\n%-14s %d\n%-14s %d\n", "mesh", path.c_str(), "vertices", mesh.vertexCount(), "faces",
                 mesh.faceCount());
@@ -40,6 +60,12 @@ void printTable(const std::string& path, const TriMesh& mesh, const nlohmann::or
     }
     std::printf("%-14s %d\n%-14s %d\n%-14s %d\n%-14s %s\n%-14s %s\n", "genus", t.genus, "boundary_loops", t.boundaryLoops,
                 "components", t.components, "manifold", t.manifold() ? "yes" : "no", "orientable", t.orientable ? "yes" : "no");
+    for (const auto& [key, value] : parts.items()) {
+        if (value.is_null())
+            std::printf("%-14s inf\n", key.c_str());
+        else
+            std::printf("%-14s %.6g\n", key.c_str(), value.get<double>());
+    }
 }
 
 }  // namespace
@@ -54,18 +80,27 @@ int runMetrics(const std::vector<std::string>& args)
     const std::string& path = fileArguments(a, 1, "metrics", "exactly one mesh file")[0];
     const TriMesh mesh = readMesh(path);
     QualityMetrics quality = computeQuality(mesh);
+    nlohmann::ordered_json parts = nlohmann::ordered_json::object();
+    PartCoverage coverage;
     if (auto ref = a.text("ref")) {
         const TriMesh reference = readMesh(*ref);
         const DistanceMetrics d = computeDistance(mesh, reference);
         quality.dRms = d.rms;
         quality.dH = d.hausdorff;
         quality.dBoundary = boundaryDistance(mesh, reference);
+        coverage = measurePartCoverage(mesh, reference);
+        parts = partsJson(coverage);
     }
-    const nlohmann::ordered_json metrics = metricsJson(quality);
-    if (a.flag("json"))
+    nlohmann::ordered_json metrics = metricsJson(quality);
+    if (a.flag("json")) {
+        metrics.update(parts);
         std::printf("%s\n", metrics.dump(2).c_str());
-    else
-        printTable(path, mesh, metrics, computeTopology(mesh));
+    } else {
+        printTable(path, mesh, metrics, computeTopology(mesh), parts);
+        for (size_t p = 0; p < coverage.parts.size(); ++p)
+            std::printf("  part %zu: %.3g %% of the area, gap %.3g edge lengths, %d pieces\n", p + 1,
+                        100.0 * coverage.parts[p].areaFraction, coverage.parts[p].gap, coverage.parts[p].pieces);
+    }
     return 0;
 }
 

@@ -1,0 +1,135 @@
+#include "part_coverage.h"
+
+#include "closest_point.h"
+#include "disjoint_sets.h"
+#include "mesh_edges.h"
+#include "metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace fieldcvt {
+
+namespace {
+
+//! Per face, its connected component (through shared edges) numbered 0..count-1 in order of
+//! first face; `count` receives the number of components.
+std::vector<int> faceComponents(const TriMesh& mesh, int& count)
+{
+    const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
+    DisjointSets sets(mesh.faceCount());
+    for (int e = 0; e < edges.edgeCount(); ++e)
+        for (int i = 1; i < edges.faceCount(e); ++i) sets.unite(edges.face(e, 0), edges.face(e, i));
+    std::vector<int> label(mesh.faceCount(), -1), component(mesh.faceCount());
+    count = 0;
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+        const int root = sets.find(f);
+        if (label[root] < 0) label[root] = count++;
+        component[f] = label[root];
+    }
+    return component;
+}
+
+struct Sample {
+    Vec3 point;
+    int part;       //!< the input component
+    double weight;  //!< the area it stands for
+};
+
+//! The centroids of the n x n subdivision of every face (n from its longest edge and `spacing`,
+//! at most 32), each weighted with its sub-triangle's area; plus every vertex, weight 0 (so that
+//! the gap sees the corners).
+std::vector<Sample> sampleFaces(const TriMesh& mesh, const std::vector<int>& component, double spacing)
+{
+    std::vector<Sample> samples;
+    std::vector<char> emitted(mesh.vertexCount(), 0);
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+        const Face& t = mesh.faces[f];
+        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        for (int v : t)
+            if (!emitted[v]) {
+                emitted[v] = 1;
+                samples.push_back({mesh.vertices[v], component[f], 0.0});
+            }
+        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 32);
+        const double weight = 0.5 * (b - a).cross(c - a).norm() / (n * n);
+        const Vec3 u = (b - a) / n, w = (c - a) / n;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; i + j < n; ++j) {
+                samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * w, component[f], weight});
+                if (i + j < n - 1) samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * w, component[f], weight});
+            }
+    }
+    return samples;
+}
+
+}  // namespace
+
+PartCoverage measurePartCoverage(const TriMesh& output, const TriMesh& input, const PartCoverageParams& params)
+{
+    int inputComponents = 0, outputComponents = 0;
+    const std::vector<int> inputPart = faceComponents(input, inputComponents);
+    const std::vector<int> outputPiece = faceComponents(output, outputComponents);
+
+    std::vector<double> area(inputComponents, 0.0);
+    double totalArea = 0;
+    for (int f = 0; f < input.faceCount(); ++f) {
+        const Face& t = input.faces[f];
+        const double a =
+            0.5 * (input.vertices[t[1]] - input.vertices[t[0]]).cross(input.vertices[t[2]] - input.vertices[t[0]]).norm();
+        area[inputPart[f]] += a;
+        totalArea += a;
+    }
+    const double edgeLength = meanEdgeLength(output);
+    const bool noOutput = output.faceCount() == 0 || !(edgeLength > 0);
+    const double spacing = noOutput ? std::numeric_limits<double>::infinity() : 0.5 * edgeLength;
+    const std::vector<Sample> samples = sampleFaces(input, inputPart, spacing);
+
+    // Per sample: distance to the output and the output component it is nearest to.
+    std::vector<double> distance(samples.size(), std::numeric_limits<double>::infinity());
+    std::vector<int> piece(samples.size(), -1);
+    if (!noOutput) {
+        const ClosestPointTree tree(output);
+#pragma omp parallel for schedule(static)
+        for (long long i = 0; i < static_cast<long long>(samples.size()); ++i) {
+            const ClosestPoint c = tree.closest(samples[i].point);
+            distance[i] = std::sqrt(c.squaredDistance);
+            piece[i] = outputPiece[c.face];
+        }
+    }
+
+    std::vector<double> gap(inputComponents, 0.0);
+    std::vector<std::map<int, double>> shares(inputComponents);
+    for (size_t i = 0; i < samples.size(); ++i) {
+        const int p = samples[i].part;
+        gap[p] = std::max(gap[p], distance[i]);
+        if (piece[i] >= 0) shares[p][piece[i]] += samples[i].weight;
+    }
+
+    PartCoverage coverage;
+    for (int p = 0; p < inputComponents; ++p) {
+        const double fraction = totalArea > 0 ? area[p] / totalArea : 0.0;
+        if (fraction < params.minAreaFraction) {
+            ++coverage.smallParts;
+            coverage.smallAreaFraction += fraction;
+            coverage.smallPartsGap = std::max(coverage.smallPartsGap, noOutput ? gap[p] : gap[p] / edgeLength);
+            continue;
+        }
+        PartFigures figures;
+        figures.areaFraction = fraction;
+        figures.gap = noOutput ? std::numeric_limits<double>::infinity() : gap[p] / edgeLength;
+        for (const auto& [outputComponent, share] : shares[p])
+            if (share >= params.minPieceShare * area[p]) ++figures.pieces;
+        coverage.parts.push_back(figures);
+        coverage.largestGap = std::max(coverage.largestGap, figures.gap);
+        coverage.mostPieces = std::max(coverage.mostPieces, figures.pieces);
+    }
+    std::stable_sort(coverage.parts.begin(), coverage.parts.end(),
+                     [](const PartFigures& x, const PartFigures& y) { return x.areaFraction > y.areaFraction; });
+    return coverage;
+}
+
+}  // namespace fieldcvt
