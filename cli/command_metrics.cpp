@@ -98,8 +98,9 @@ int runMetrics(const std::vector<std::string>& args)
     } else {
         printTable(path, mesh, metrics, computeTopology(mesh), parts);
         for (size_t p = 0; p < coverage.parts.size(); ++p)
-            std::printf("  part %zu: %.3g %% of the area, gap %.3g edge lengths, %d pieces\n", p + 1,
-                        100.0 * coverage.parts[p].areaFraction, coverage.parts[p].gap, coverage.parts[p].pieces);
+            std::printf("  part %zu: %.3g %% of the area, gap %.3g edge lengths (at %.6g %.6g %.6g), %d pieces\n", p + 1,
+                        100.0 * coverage.parts[p].areaFraction, coverage.parts[p].gap, coverage.parts[p].farthestPoint.x(),
+                        coverage.parts[p].farthestPoint.y(), coverage.parts[p].farthestPoint.z(), coverage.parts[p].pieces);
     }
     return 0;
 }

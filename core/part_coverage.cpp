@@ -34,13 +34,11 @@ std::vector<int> faceComponents(const TriMesh& mesh, int& count)
 
 struct Sample {
     Vec3 point;
-    int part;       //!< the input component
-    double weight;  //!< the area it stands for
+    int part;  //!< the input component
 };
 
 //! The centroids of the n x n subdivision of every face (n from its longest edge and `spacing`,
-//! at most 32), each weighted with its sub-triangle's area; plus every vertex, weight 0 (so that
-//! the gap sees the corners).
+//! at most 32), plus every vertex (so that the gap sees the corners).
 std::vector<Sample> sampleFaces(const TriMesh& mesh, const std::vector<int>& component, double spacing)
 {
     std::vector<Sample> samples;
@@ -51,19 +49,46 @@ std::vector<Sample> sampleFaces(const TriMesh& mesh, const std::vector<int>& com
         for (int v : t)
             if (!emitted[v]) {
                 emitted[v] = 1;
-                samples.push_back({mesh.vertices[v], component[f], 0.0});
+                samples.push_back({mesh.vertices[v], component[f]});
             }
         const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
         const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 32);
-        const double weight = 0.5 * (b - a).cross(c - a).norm() / (n * n);
         const Vec3 u = (b - a) / n, w = (c - a) / n;
         for (int i = 0; i < n; ++i)
             for (int j = 0; i + j < n; ++j) {
-                samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * w, component[f], weight});
-                if (i + j < n - 1) samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * w, component[f], weight});
+                samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * w, component[f]});
+                if (i + j < n - 1) samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * w, component[f]});
             }
     }
     return samples;
+}
+
+//! Per input component, the output components it owns: an output component belongs to the
+//! input component nearest to most of its vertices (ties to the lower index). Parts that touch
+//! or cross each other do not confuse this, as nearest output pieces to a part's points would.
+std::vector<int> piecesPerPart(const TriMesh& output, const std::vector<int>& outputPiece, int outputComponents,
+                               const TriMesh& input, const std::vector<int>& inputPart, int inputComponents)
+{
+    std::vector<int> pieces(inputComponents, 0);
+    if (output.faceCount() == 0 || input.faceCount() == 0) return pieces;
+    std::vector<int> vertexPiece(output.vertexCount(), -1);
+    for (int f = 0; f < output.faceCount(); ++f)
+        for (int v : output.faces[f]) vertexPiece[v] = outputPiece[f];
+    std::vector<int> nearestPart(output.vertexCount(), -1);
+    const ClosestPointTree tree(input);
+#pragma omp parallel for schedule(static)
+    for (int v = 0; v < output.vertexCount(); ++v)
+        if (vertexPiece[v] >= 0) nearestPart[v] = inputPart[tree.closest(output.vertices[v]).face];
+    std::vector<std::map<int, int>> votes(outputComponents);
+    for (int v = 0; v < output.vertexCount(); ++v)
+        if (vertexPiece[v] >= 0) ++votes[vertexPiece[v]][nearestPart[v]];
+    for (const auto& vote : votes) {
+        int owner = -1, most = 0;
+        for (const auto& [part, count] : vote)
+            if (count > most) owner = part, most = count;
+        if (owner >= 0) ++pieces[owner];
+    }
+    return pieces;
 }
 
 }  // namespace
@@ -90,25 +115,23 @@ PartCoverage measurePartCoverage(const TriMesh& output, const TriMesh& input, co
 
     // Per sample: distance to the output and the output component it is nearest to.
     std::vector<double> distance(samples.size(), std::numeric_limits<double>::infinity());
-    std::vector<int> piece(samples.size(), -1);
     if (!noOutput) {
         const ClosestPointTree tree(output);
 #pragma omp parallel for schedule(static)
         for (long long i = 0; i < static_cast<long long>(samples.size()); ++i) {
             const ClosestPoint c = tree.closest(samples[i].point);
             distance[i] = std::sqrt(c.squaredDistance);
-            piece[i] = outputPiece[c.face];
         }
     }
 
     std::vector<double> gap(inputComponents, 0.0);
-    std::vector<std::map<int, double>> shares(inputComponents);
-    for (size_t i = 0; i < samples.size(); ++i) {
-        const int p = samples[i].part;
-        gap[p] = std::max(gap[p], distance[i]);
-        if (piece[i] >= 0) shares[p][piece[i]] += samples[i].weight;
-    }
-
+    std::vector<Vec3> farthest(inputComponents, Vec3::Zero());
+    for (size_t i = 0; i < samples.size(); ++i)
+        if (distance[i] > gap[samples[i].part]) {
+            gap[samples[i].part] = distance[i];
+            farthest[samples[i].part] = samples[i].point;
+        }
+    const std::vector<int> pieces = piecesPerPart(output, outputPiece, outputComponents, input, inputPart, inputComponents);
     PartCoverage coverage;
     for (int p = 0; p < inputComponents; ++p) {
         const double fraction = totalArea > 0 ? area[p] / totalArea : 0.0;
@@ -121,8 +144,8 @@ PartCoverage measurePartCoverage(const TriMesh& output, const TriMesh& input, co
         PartFigures figures;
         figures.areaFraction = fraction;
         figures.gap = noOutput ? std::numeric_limits<double>::infinity() : gap[p] / edgeLength;
-        for (const auto& [outputComponent, share] : shares[p])
-            if (share >= params.minPieceShare * area[p]) ++figures.pieces;
+        figures.pieces = pieces[p];
+        figures.farthestPoint = farthest[p];
         coverage.parts.push_back(figures);
         coverage.largestGap = std::max(coverage.largestGap, figures.gap);
         coverage.mostPieces = std::max(coverage.mostPieces, figures.pieces);

@@ -14,10 +14,6 @@ struct PartCoverageParams {
     //! A part is an input component with at least this share of the input's area; smaller
     //! components may be dropped by the remeshing (counted apart).
     double minAreaFraction = 0.005;
-    //! An output component counts as one of a part's pieces when it is the nearest output
-    //! component to at least this share of the part's area (a sliver of a neighbouring part's
-    //! shell that happens to be nearest to a corner is not a piece).
-    double minPieceShare = 0.01;
 };
 
 struct PartFigures {
@@ -25,7 +21,10 @@ struct PartFigures {
     //! Largest distance from a point of the part to the output surface, in output edge lengths
     //! (the output's mean edge length).
     double gap = 0;
-    int pieces = 0;  //!< output components nearest to at least minPieceShare of the part
+    Vec3 farthestPoint = Vec3::Zero();  //!< the point of the part where the gap is
+    //! Output components that belong to the part: those whose vertices are nearest to it for
+    //! the most part.
+    int pieces = 0;
 };
 
 struct PartCoverage {
@@ -38,7 +37,8 @@ struct PartCoverage {
 };
 
 //! Samples every input face at about half the output's mean edge length (the centroids of a
-//! regular subdivision, plus the vertices) and finds each sample's closest output point exactly.
+//! regular subdivision, plus the vertices) and finds each sample's closest output point exactly;
+//! gives each output component to the input component nearest to most of its vertices.
 //! Components through shared edges (non-manifold ones included). Deterministic; OpenMP over
 //! samples. An output without faces leaves every gap infinite and no pieces.
 PartCoverage measurePartCoverage(const TriMesh& output, const TriMesh& input, const PartCoverageParams& params = {});
