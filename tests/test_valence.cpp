@@ -8,6 +8,7 @@
 #include "metrics.h"
 #include "remesh.h"
 #include "test_meshes.h"
+#include "triangle_shape.h"
 #include "valence.h"
 
 #include <gtest/gtest.h>
@@ -583,4 +584,53 @@ TEST(Valence, FreeVertexOnTheMeshBorderIsPutOnTheInputBorder)
                 EXPECT_LT((closestPointOnSegments(mesh.vertices[v], border) - mesh.vertices[v]).norm(), tolerance);
             }
     EXPECT_GT(onMeshBorder, 0);
+}
+
+// Border vertices slide along the input's border in the angle repair (issue 32 item 1: the
+// border triangles of dense strips on scans): a rim vertex of the cylinder moved 0.6 edge
+// lengths along the rim, so that its faces are sharp, moves back along it, on it, and the
+// smallest angle around it rises; with the operations and the relaxation off, only the repair
+// moves it.
+TEST(Valence, AngleRepairSlidesBorderVerticesAlongTheBorder)
+{
+    const TriMesh input = readMesh(testmesh::resource("cylinder.off"));
+    TriMesh mesh = remeshedWithoutValence(input, 500);
+    const std::vector<Segment> border = boundarySegments(input);
+    std::map<std::pair<int, int>, int> edges;
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) ++edges[std::minmax(f[k], f[(k + 1) % 3])];
+    std::vector<VertexRole> roles(mesh.vertices.size(), VertexRole::Free);
+    int moved = -1, neighbour = -1;
+    for (const auto& [e, count] : edges)
+        if (count == 1) {
+            roles[e.first] = roles[e.second] = VertexRole::Boundary;
+            if (moved < 0) moved = e.first, neighbour = e.second;
+        }
+    ASSERT_GE(moved, 0);
+    // Towards its neighbour along the rim, then back onto the rim.
+    const Vec3 start = mesh.vertices[moved];
+    const double edge = (mesh.vertices[neighbour] - start).norm();
+    mesh.vertices[moved] = closestPointOnSegments(start + 0.6 * (mesh.vertices[neighbour] - start), border);
+    auto smallestAround = [&](const TriMesh& m, int v) {
+        double smallest = 180;
+        for (const Face& f : m.faces)
+            if (f[0] == v || f[1] == v || f[2] == v)
+                smallest = std::min(smallest, smallestAngle(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) * 180 / kPi);
+        return smallest;
+    };
+    const double before = smallestAround(mesh, moved);
+    const Vec3 shifted = mesh.vertices[moved];
+    ASSERT_LT(before, 30.0);
+
+    ClosestPointTree tree(input);
+    const ValenceSurface surface{input, tree, {}, nullptr, border};
+    ValenceParams params;
+    params.maxRounds = 0;
+    params.lookAheadDepth = 0;
+    params.relaxIterations = 0;
+    optimizeValence(mesh, roles, surface, params);
+    const Vec3& after = mesh.vertices[moved];
+    EXPECT_GT((after - shifted).norm(), 0.05 * edge);
+    EXPECT_LT((closestPointOnSegments(after, border) - after).norm(), 1e-9 * boundingBoxDiagonal(input));
+    EXPECT_GT(smallestAround(mesh, moved), before + 5.0);
 }

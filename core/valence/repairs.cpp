@@ -1,9 +1,11 @@
 #include "valence/repairs.h"
 
+#include "boundary.h"
 #include "triangle_shape.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace fieldcvt::valence {
@@ -12,7 +14,7 @@ namespace {
 
 // Tuning (the measurements: docs/tuning.md).
 //! Angle repair: rounds over the corners still under the minimum angle.
-constexpr int kAngleRepairRounds = 3;
+constexpr int kAngleRepairRounds = 8;
 //! The repairs' pattern search: first step in mean edge lengths (halved when nothing improves)...
 constexpr double kAngleRepairStep = 0.1;
 //! ... within this many edge lengths of where the vertex was...
@@ -99,6 +101,68 @@ bool raiseAnglesAround(ValenceMesh& mesh, SagGuard& sag, int v)
         return true;
     };
     return searchOnSurface(mesh, v, kAngleRepairMaxSteps, 1.0 / 32, improves, [] { return false; });
+}
+
+//! One Boundary vertex of raiseSmallestAngles: slides along the input's border (the pieces of it
+//! within reach), a step of kAngleRepairStep edge lengths each way along the nearest piece,
+//! halved when neither improves, within kAngleRepairDrift edge lengths of where it was. A trial
+//! whose closest border point is far from the trial point (the border of another hole across a
+//! narrow strip) is skipped: v stays on its own border. Returns whether it moved.
+bool slideAlongBorder(ValenceMesh& mesh, SagGuard& sag, int v)
+{
+    if (!mesh.vertexAlive(v) || mesh.data(v).role != VertexRole::Boundary || mesh.facesOf(v).empty() || !mesh.data(v).manifold ||
+        mesh.surface().border.empty())
+        return false;
+    const double edgeLength = mesh.edgeLength();
+    const Vec3 start = mesh.position(v);
+    const double reach = (kAngleRepairDrift + kAngleRepairStep) * edgeLength;
+    std::vector<Segment> near;
+    for (const Segment& segment : mesh.surface().border) {
+        double squared = 0;
+        closestPointOnSegment(start, segment, &squared);
+        if (squared <= reach * reach) near.push_back(segment);
+    }
+    if (near.empty()) return false;
+    const std::vector<int>& faces = mesh.facesOf(v);
+    double angleBefore, dotBefore;
+    mesh.localShape(faces, angleBefore, dotBefore);
+    const double sagLimit = sag.repairLimit(faces);
+    const double minDot = std::min(kMinNormalDot, dotBefore);
+    double best = angleBefore;
+    Vec3 bestPos = start;
+    ClosestPoint bestClosest = mesh.data(v).closest;
+    double step = kAngleRepairStep * edgeLength;
+    for (int iteration = 0; iteration < kAngleRepairMaxSteps && step > kAngleRepairStep * edgeLength / 32; ++iteration) {
+        // The direction of the border piece nearest to where v is now.
+        double nearest = std::numeric_limits<double>::infinity();
+        Vec3 along = Vec3::Zero();
+        for (const Segment& segment : near) {
+            double squared = 0;
+            closestPointOnSegment(bestPos, segment, &squared);
+            if (squared < nearest) nearest = squared, along = segment.second - segment.first;
+        }
+        if (!(along.norm() > 0)) break;
+        along.normalize();
+        const Vec3 centre = bestPos;
+        const ClosestPoint centreClosest = bestClosest;
+        bool improved = false;
+        for (double sign : {-1.0, 1.0}) {
+            const Vec3 q = centre + sign * step * along;
+            const Vec3 onBorder = closestPointOnSegments(q, near);
+            if ((onBorder - q).norm() > 0.5 * step || (onBorder - start).norm() > kAngleRepairDrift * edgeLength) continue;
+            mesh.place(v, onBorder, mesh.surface().tree.closest(onBorder, centreClosest.face));
+            double angle, dot;
+            mesh.localShape(faces, angle, dot);
+            if (angle > best + 1e-9 && dot >= minDot && !sag.exceedsAny(faces, sagLimit)) {
+                best = angle;
+                bestPos = mesh.position(v), bestClosest = mesh.data(v).closest;
+                improved = true;
+            }
+        }
+        mesh.place(v, bestPos, bestClosest);
+        if (!improved) step *= 0.5;
+    }
+    return bestPos != start;
 }
 
 //! One vertex of lowerLargestSags: its faces' largest sag down towards `target`; returns
@@ -214,7 +278,10 @@ void raiseSmallestAngles(ValenceMesh& mesh, SagGuard& sag, const ValenceParams& 
         std::sort(verts.begin(), verts.end());
         verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
         bool moved = false;
-        for (int v : verts) moved = raiseAnglesAround(mesh, sag, v) || moved;  // Gauss–Seidel, index order
+        for (int v : verts)  // Gauss–Seidel, index order
+            moved =
+                (mesh.data(v).role == VertexRole::Boundary ? slideAlongBorder(mesh, sag, v) : raiseAnglesAround(mesh, sag, v)) ||
+                moved;
         if (!moved) return;
     }
 }
