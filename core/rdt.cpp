@@ -1,5 +1,6 @@
 #include "rdt.h"
 
+#include "disjoint_sets.h"
 #include "errors.h"
 #include "mesh_edges.h"
 #include "triangle_shape.h"
@@ -220,6 +221,67 @@ void warnAboutDroppedSeeds(RdtResult& result, int seedCount)
 }
 
 }  // namespace
+
+int dropDebris(RdtResult& rdt, int maxFaces, double reach)
+{
+    TriMesh& mesh = rdt.mesh;
+    const int faceCount = mesh.faceCount();
+    const EdgeTable edges = buildEdgeTable(mesh);
+    DisjointSets sets(faceCount);
+    for (int e = 0; e < edges.edgeCount(); ++e)
+        for (int i = 1; i < edges.faceCount(e); ++i) sets.unite(edges.face(e, 0), edges.face(e, i));
+    std::vector<int> size(faceCount, 0);
+    for (int f = 0; f < faceCount; ++f) ++size[sets.find(f)];
+    TriMesh rest;  // the faces of the larger pieces (vertices shared with `mesh`)
+    rest.vertices = mesh.vertices;
+    bool anySmall = false;
+    for (int f = 0; f < faceCount; ++f) {
+        if (size[sets.find(f)] > maxFaces)
+            rest.faces.push_back(mesh.faces[f]);
+        else
+            anySmall = true;
+    }
+    if (!anySmall || rest.faces.empty()) return 0;
+    const ClosestPointTree tree(rest);
+    // Per small piece (by its root face): whether some vertex is farther than `reach` from the rest.
+    std::vector<char> far(faceCount, 0);
+    for (int f = 0; f < faceCount; ++f) {
+        const int root = sets.find(f);
+        if (size[root] > maxFaces || far[root]) continue;
+        for (int v : mesh.faces[f])
+            if (tree.closest(mesh.vertices[v]).squaredDistance > reach * reach) far[root] = 1;
+    }
+    std::vector<char> drop(faceCount, 0);
+    int dropped = 0;
+    for (int f = 0; f < faceCount; ++f)
+        if (sets.find(f) == f && size[f] <= maxFaces && !far[f]) drop[f] = 1, ++dropped;
+    if (dropped == 0) return 0;
+    rdt.debrisPieces += dropped;
+    std::vector<Face> faces;
+    for (int f = 0; f < faceCount; ++f)
+        if (!drop[sets.find(f)]) faces.push_back(mesh.faces[f]);
+    // Renumber the vertices the kept faces use, in their order.
+    std::vector<int> index(mesh.vertices.size(), -1);
+    std::vector<Vec3> vertices;
+    std::vector<int> seedOfVertex, faceOfVertex;
+    for (Face& t : faces)
+        for (int& v : t) {
+            if (index[v] < 0) {
+                index[v] = static_cast<int>(vertices.size());
+                vertices.push_back(mesh.vertices[v]);
+                seedOfVertex.push_back(rdt.seedOfVertex[v]);
+                if (!rdt.faceOfVertex.empty()) faceOfVertex.push_back(rdt.faceOfVertex[v]);
+            }
+            v = index[v];
+        }
+    mesh.vertices = std::move(vertices);
+    mesh.faces = std::move(faces);
+    rdt.seedOfVertex = std::move(seedOfVertex);
+    rdt.faceOfVertex = std::move(faceOfVertex);
+    rdt.warnings.push_back(std::to_string(dropped) + " pieces of at most " + std::to_string(maxFaces) +
+                           " faces beside the rest of the mesh dropped (cells cut by parts narrower than the edge length)");
+    return dropped;
+}
 
 RdtResult extractRdt(const std::vector<Vec3>& seeds, const std::vector<std::array<int, 3>>& triangles,
                      const ClosestPointTree& surface)

@@ -28,8 +28,18 @@ struct RdtResult {
     //! only, a sliver (a cell reaching across a gap of the border narrower than a cell); kept, its
     //! vertex would lie on the border in line with the triangle's two others.
     int slitPieces = 0;
+    int debrisPieces = 0;  //!< pieces dropped by dropDebris
     std::vector<std::string> warnings;
 };
+
+//! Drops debris: connected pieces of the output (through edges) of at most `maxFaces` faces
+//! whose every vertex lies within `reach` of the rest of the output. Cells cut by a part
+//! narrower than the edge length leave such crumbs beside the part's own mesh: a part in
+//! pieces for the user (issue 32 item 3), and nothing the rest does not cover within `reach`.
+//! An isolated small piece (a small part of the input of its own) is kept. Vertices no face
+//! uses any more are removed with their seedOfVertex and faceOfVertex. Returns the pieces dropped
+//! (also added to debrisPieces).
+int dropDebris(RdtResult& rdt, int maxFaces, double reach);
 
 //! Builds the output mesh from the RVD's triangles: drops lens pieces (RdtResult::lensPieces),
 //! removes faces that would make an edge non-manifold (more than two faces, or two faces with

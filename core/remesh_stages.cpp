@@ -448,6 +448,7 @@ void extractMesh(RemeshRun& run)
         // On cell pieces (multi-nerve RDT); the samples' frame faces are hints for their closest points.
         const std::vector<int>&hints = run.energy->lastFrameFaces(), none;
         RdtResult rdt = extractRdt(run.seeds, rvd, *run.tree, hints.size() == run.seeds.size() ? hints : none);
+        dropDebris(rdt, kDebrisFaces, kDebrisReachEdges * kWorkingEdgeLength);
         run.result.warnings.insert(run.result.warnings.end(), rdt.warnings.begin(), rdt.warnings.end());
         run.result.mesh = std::move(rdt.mesh);
         if (run.result.mesh.faces.empty())

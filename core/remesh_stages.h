@@ -28,6 +28,10 @@ using Clock = std::chrono::steady_clock;
 //! At the working scale the mean cell has area 1: an equilateral triangle mesh with one vertex
 //! per unit of area has edges sqrt(2 / sqrt(3)) long.
 inline const double kWorkingEdgeLength = std::sqrt(2.0 / std::sqrt(3.0));
+//! The RDT's debris (rdt.h, dropDebris): pieces of at most this many faces, within this many edge
+//! lengths of the rest of the output (issue 32 item 3 asks every point of a part within 2).
+constexpr int kDebrisFaces = 8;
+constexpr double kDebrisReachEdges = 2;
 
 double secondsSince(Clock::time_point start);
 

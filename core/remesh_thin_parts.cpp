@@ -1,5 +1,6 @@
-// remesh()'s passes for thin parts (remesh_stages.h, remeshThinPartsAgain): issue 32, item 2.
+// remesh()'s passes for thin parts (remesh_stages.h, remeshThinPartsAgain): issue 32, items 2 and 3.
 #include "boundary.h"
+#include "closest_point.h"
 #include "metrics.h"
 #include "remesh_stages.h"
 #include "thin_parts.h"
@@ -45,6 +46,40 @@ std::vector<Vec3> tornBorderPoints(const TriMesh& mesh, const std::vector<Segmen
     return torn;
 }
 
+//! A part of the surface farther than this many edge lengths from the output is lost (issue 32
+//! item 3: every point of a part within 2 edge lengths of the output).
+constexpr double kLostEdges = 1.5;
+
+//! What of the surface the output lost: the surface's vertices farther than kLostEdges edge
+//! lengths from `mesh` (a peninsula of a ragged border or a plate narrower than the edge
+//! length, which the RDT drops, or a crumb of it dropped as debris), and their area in cells
+//! (one cell per unit of area at the working scale: about the vertices missing), rounded up.
+struct LostSurface {
+    std::vector<Vec3> points;
+    int cells = 0;
+};
+
+LostSurface lostSurface(const TriMesh& mesh, const TriMesh& surface)
+{
+    LostSurface lost;
+    if (mesh.faces.empty()) return lost;
+    const ClosestPointTree tree(mesh);
+    const double limit = kLostEdges * kWorkingEdgeLength;
+    const int vertexCount = surface.vertexCount();
+    std::vector<char> far(vertexCount, 0);
+#pragma omp parallel for schedule(static)
+    for (int v = 0; v < vertexCount; ++v) far[v] = tree.closest(surface.vertices[v]).squaredDistance > limit * limit;
+    double area = 0;
+    for (int f = 0; f < surface.faceCount(); ++f)
+        for (int v : surface.faces[f])
+            if (far[v]) area += faceArea(surface, f) / 3;
+    for (int v = 0; v < vertexCount; ++v)
+        if (far[v]) lost.points.push_back(surface.vertices[v]);
+    lost.cells = static_cast<int>(std::ceil(area));
+    if (lost.cells == 0 && !lost.points.empty()) lost.cells = 1;
+    return lost;
+}
+
 //! How far a mesh's topology is from the input's: 0 when genus, boundary loops and components
 //! all agree and it is manifold.
 int topologyDistance(const TopologySummary& output, const TopologySummary& input)
@@ -62,7 +97,8 @@ struct PassOutcome {
     int sampleCount = 0;
     std::vector<double> rho;
     TopologySummary topology;
-    int distance = 0;  //!< topologyDistance from the input's
+    LostSurface lost;  //!< the surface it lost
+    int distance = 0;  //!< topologyDistance from the input's, plus the lost surface's cells
     bool shapeMeasured = false;
     double smallestAngle = 0;  //!< degrees, after the valence stage (when shapeMeasured)
     double shareUnder30 = 0;   //!< % of the triangles with an angle under 30 degrees, after it
@@ -86,7 +122,8 @@ PassOutcome takeOutcome(RemeshRun& run)
 {
     PassOutcome out;
     out.topology = computeTopology(run.result.mesh);
-    out.distance = topologyDistance(out.topology, run.result.inputTopology);
+    out.lost = lostSurface(run.result.mesh, run.optSurface());
+    out.distance = topologyDistance(out.topology, run.result.inputTopology) + out.lost.cells;
     out.mesh = std::move(run.result.mesh);
     out.roles = std::move(run.roles);
     out.vertexFaceHints = std::move(run.vertexFaceHints);
@@ -168,7 +205,11 @@ std::string thinPartsWarning(const RemeshRun& run, const PassOutcome& first, con
                   kept.sampleCount - first.sampleCount, kept.thinFaces, kept.thinnest / run.frame.scale, first.sampleCount,
                   first.topology.genus, first.topology.boundaryLoops, first.topology.components, in.genus, in.boundaryLoops,
                   in.components);
-    return text;
+    std::string warning = text;
+    if (first.lost.cells > 0)
+        warning += ", and had lost about " + std::to_string(first.lost.cells) +
+                   " cells' area of it (parts narrower than the edge length)";
+    return warning;
 }
 
 }  // namespace
@@ -178,7 +219,9 @@ void remeshThinPartsAgain(RemeshRun& run)
     const RemeshParams& p = run.params;
     RemeshResult& result = run.result;
     if (p.exactCount || !p.initialSamples.empty() || result.mesh.faces.empty()) return;
-    if (!thinPartsMayMend(computeTopology(result.mesh), result.inputTopology)) return;
+    if (!thinPartsMayMend(computeTopology(result.mesh), result.inputTopology) &&
+        lostSurface(result.mesh, run.optSurface()).points.empty())
+        return;
     // The warnings before the first optimisation: each pass adds its own after them.
     const std::vector<std::string> before(result.warnings.begin(),
                                           result.warnings.begin() + static_cast<std::ptrdiff_t>(run.optimisationWarnings));
@@ -194,8 +237,9 @@ void remeshThinPartsAgain(RemeshRun& run)
         ThinPartFocus focus;
         if (pass == 0) {
             focus.points = tornBorderPoints(base.mesh, run.border);
+            focus.points.insert(focus.points.end(), base.lost.points.begin(), base.lost.points.end());
             focus.radius = kTearFocusEdges * kWorkingEdgeLength;
-            if (focus.points.empty()) continue;  // nothing tore (a genus lost): the next passes
+            if (focus.points.empty()) continue;  // nothing tore or was lost (a genus lost): the next passes
         }
         result.warnings = before;
         run.sampleCount = base.sampleCount;
@@ -205,6 +249,7 @@ void remeshThinPartsAgain(RemeshRun& run)
         measured.thinnest = base.thinnest;
         const bool raised = raiseDensityOnThinParts(run, focus, params, maxSamples, measured);
         params.edgePerThickness /= kEdgeShrinkPerPass;
+        params.edgePerStripWidth /= kEdgeShrinkPerPass;
         if (!raised) continue;
         setUpEnergy(run);
         placeSamples(run);

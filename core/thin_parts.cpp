@@ -208,15 +208,16 @@ ThinPartDensity thinPartDensity(const TriMesh& surface, const ClosestPointTree& 
     // Strips of surface between borders (holes closer than an edge length): the faces at their
     // border vertices.
     const std::vector<double> strip = borderStripWidths(surface, thinUnder);
-    for (int f = 0; f < faceCount; ++f)
-        if (inFocus.empty() || inFocus[f])
-            for (int v : surface.faces[f]) thickness[f] = std::min(thickness[f], strip[v]);
     std::vector<double> length(faceCount, kInfinity);
     for (int f = 0; f < faceCount; ++f) {
-        if (thickness[f] < thinUnder) {
-            length[f] = params.edgePerThickness * thickness[f];
+        double width = kInfinity;
+        if (inFocus.empty() || inFocus[f])
+            for (int v : surface.faces[f]) width = std::min(width, strip[v]);
+        if (thickness[f] < thinUnder || width < thinUnder) {
+            length[f] = std::min(params.edgePerThickness * thickness[f], params.edgePerStripWidth * width);
             ++out.thinFaces;
-            out.thinnest = out.thinFaces == 1 ? thickness[f] : std::min(out.thinnest, thickness[f]);
+            const double thinnest = std::min(thickness[f], width);
+            out.thinnest = out.thinFaces == 1 ? thinnest : std::min(out.thinnest, thinnest);
         }
     }
     if (out.thinFaces == 0) return out;

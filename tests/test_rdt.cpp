@@ -363,3 +363,38 @@ TEST(Rdt, VerticesKnowTheirFaceAndHintsChangeNothing)
     EXPECT_EQ(hinted.mesh.faces, plain.mesh.faces);
     EXPECT_THROW(extractRdt(seeds, result, tree, std::vector<int>(3, 0)), InvalidInputError);
 }
+
+// Debris (issue 32 item 3): a crumb of a few faces beside the rest of the output is dropped with
+// its vertices (their samples and face hints with them); one as small but far from the rest (a
+// small part of the input of its own) is kept.
+TEST(Rdt, DebrisBesideTheRestIsDroppedAndFarPiecesKept)
+{
+    RdtResult rdt;
+    rdt.mesh = testmesh::planeGrid(6);  // 49 vertices, 72 faces, edges 1/6
+    auto crumb = [&](const Vec3& at) {
+        const int base = rdt.mesh.vertexCount();
+        for (const Vec3& d : {Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0, 0.1, 0)}) rdt.mesh.vertices.push_back(at + d);
+        rdt.mesh.faces.push_back({base, base + 1, base + 2});
+    };
+    crumb(Vec3(0.5, 0.5, 0.1));  // 0.1 above the grid
+    crumb(Vec3(0.5, 0.5, 3.0));  // far above it
+    for (int v = 0; v < rdt.mesh.vertexCount(); ++v) {
+        rdt.seedOfVertex.push_back(1000 + v);
+        rdt.faceOfVertex.push_back(2000 + v);
+    }
+    EXPECT_EQ(dropDebris(rdt, 4, 0.3), 1);
+    EXPECT_EQ(rdt.debrisPieces, 1);
+    ASSERT_EQ(rdt.mesh.vertexCount(), 52);
+    ASSERT_EQ(rdt.mesh.faceCount(), 73);
+    ASSERT_EQ(rdt.seedOfVertex.size(), 52u);
+    ASSERT_EQ(rdt.faceOfVertex.size(), 52u);
+    // The far crumb's vertices keep their samples and hints: they were vertices 52-54.
+    const Face& far = rdt.mesh.faces.back();
+    EXPECT_NEAR(rdt.mesh.vertices[far[0]].z(), 3.0, 1e-12);
+    EXPECT_EQ(rdt.seedOfVertex[far[0]], 1000 + 52);
+    EXPECT_EQ(rdt.faceOfVertex[far[2]], 2000 + 54);
+    EXPECT_EQ(rdt.warnings.size(), 1u);
+    // Nothing left to drop: the same mesh again.
+    EXPECT_EQ(dropDebris(rdt, 4, 0.3), 0);
+    EXPECT_EQ(rdt.mesh.faceCount(), 73);
+}

@@ -2,6 +2,7 @@
 // remesh()'s second pass where the first one's topology differs from the input's (issue 32 item 2).
 #include "closest_point.h"
 #include "metrics.h"
+#include "part_coverage.h"
 #include "remesh.h"
 #include "test_meshes.h"
 #include "thin_parts.h"
@@ -196,6 +197,52 @@ TEST(ThinParts, ModelsWhoseTopologyComesOutRightAreNotTouched)
     EXPECT_EQ(first.thinParts.added, 0);
     EXPECT_EQ(first.mesh.vertices, exact.mesh.vertices);
     EXPECT_EQ(first.mesh.faces, exact.mesh.faces);
+}
+
+//! A scan-like plate, [0, 1]², with a peninsula of `width` and `length` along +x from the middle
+//! of its right border (a ragged border's spike), on a grid of `cell`-sized squares.
+TriMesh plateWithPeninsula(double width, double length, double cell)
+{
+    TriMesh grid;
+    const int nx = static_cast<int>(std::lround((1 + length) / cell)), ny = static_cast<int>(std::lround(1 / cell));
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) grid.vertices.emplace_back(i * cell, j * cell, 0.0);
+    auto id = [nx](int i, int j) { return j * (nx + 1) + i; };
+    auto inside = [&](double x, double y) { return x < 1 || std::abs(y - 0.5) < 0.5 * width; };
+    std::vector<int> index(grid.vertices.size(), -1);
+    TriMesh out;
+    auto use = [&](int v) {
+        if (index[v] < 0) index[v] = out.vertexCount(), out.vertices.push_back(grid.vertices[v]);
+        return index[v];
+    };
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i)
+            if (inside((i + 0.5) * cell, (j + 0.5) * cell)) {
+                out.faces.push_back({use(id(i, j)), use(id(i + 1, j)), use(id(i + 1, j + 1))});
+                out.faces.push_back({use(id(i, j)), use(id(i + 1, j + 1)), use(id(i, j + 1))});
+            }
+    return out;
+}
+
+TEST(ThinParts, APeninsulaNarrowerThanTheEdgesIsKeptWholeWithGoodTriangles)
+{
+    // 300 vertices: edges about 0.06 long; the peninsula is 0.04 wide (2 grid cells) and 0.4
+    // long. Without more vertices on it the output loses it: its tip is 6 edge lengths away.
+    const TriMesh plate = plateWithPeninsula(0.04, 0.4, 0.02);
+    RemeshParams params;
+    params.vertexCount = 300;
+    params.threads = 2;
+    const RemeshResult result = remesh(plate, params);
+    const PartCoverage parts = measurePartCoverage(result.mesh, plate);
+    ASSERT_EQ(parts.parts.size(), 1u);
+    EXPECT_LE(parts.largestGap, 2.0);
+    EXPECT_EQ(parts.mostPieces, 1);
+    EXPECT_GT(result.thinParts.added, 0);
+    EXPECT_GE(result.metrics.thetaMin, 15.0);
+    EXPECT_LE(result.metrics.pctLt30, 0.5);
+    params.exactCount = true;
+    const RemeshResult exact = remesh(plate, params);
+    EXPECT_GT(measurePartCoverage(exact.mesh, plate).largestGap, 2.0);
 }
 
 }  // namespace
