@@ -26,6 +26,9 @@ constexpr double kTearFocusEdges = 2;
 //! ring over seeds 1-4 (bench/thin_parts.py, docs/measurements.md).
 constexpr int kExtraPasses = 3;
 constexpr double kEdgeShrinkPerPass = 0.7;
+//! A later pass is kept only with at most this many output vertices per vertex asked for (issue
+//! 32 item 2: "at most 2 N").
+constexpr double kMaxOutputVertexFactor = 2.0;
 //! The passes stop after this many in a row that were not kept (each costs an optimisation).
 constexpr int kMaxPassesInVain = 2;
 //! Issue 32 item 1's bars, which a later pass is held to: no smaller angle (degrees) than this
@@ -226,7 +229,12 @@ void remeshThinPartsAgain(RemeshRun& run)
     const std::vector<std::string> before(result.warnings.begin(),
                                           result.warnings.begin() + static_cast<std::ptrdiff_t>(run.optimisationWarnings));
     PassOutcome first = takeOutcome(run);
-    const int maxSamples = static_cast<int>(std::floor(p.thinParts.maxVertexFactor * first.sampleCount));
+    // Samples within maxVertexFactor × N, and output vertices within kMaxOutputVertexFactor × N:
+    // on thin walls a cell falls into a piece on each side and each piece makes a vertex
+    // (tray_bottom.stl at 554 samples: 1 020 vertices), so the samples may grow only as far as
+    // the vertices per sample of the pass they start from allow, and a pass over it is not kept.
+    const int maxVertices = static_cast<int>(std::floor(kMaxOutputVertexFactor * first.sampleCount));
+    const int maxSampleFactorCount = static_cast<int>(std::floor(p.thinParts.maxVertexFactor * first.sampleCount));
     PassOutcome best;  // the best later pass (sampleCount 0: none yet)
     ThinPartParams params = p.thinParts;
     int passesInVain = 0;
@@ -247,6 +255,8 @@ void remeshThinPartsAgain(RemeshRun& run)
         PassOutcome measured;
         measured.thinFaces = base.thinFaces;
         measured.thinnest = base.thinnest;
+        const double verticesPerSample = std::max(1.0, double(base.mesh.vertexCount()) / std::max(1, base.sampleCount));
+        const int maxSamples = std::min(maxSampleFactorCount, static_cast<int>(std::floor(maxVertices / verticesPerSample)));
         const bool raised = raiseDensityOnThinParts(run, focus, params, maxSamples, measured);
         params.edgePerThickness /= kEdgeShrinkPerPass;
         params.edgePerStripWidth /= kEdgeShrinkPerPass;
@@ -255,11 +265,13 @@ void remeshThinPartsAgain(RemeshRun& run)
         placeSamples(run);
         optimiseSamples(run);
         extractMesh(run);
-        // Kept when nearer the input's topology without slivers the first pass did not have.
+        // Kept when nearer the input's topology, within the vertex budget (the RDT's count: the
+        // valence stage's splits and collapses change it by a percent or so), without slivers the
+        // first pass did not have.
         PassOutcome outcome = takeOutcome(run);
         outcome.thinFaces = measured.thinFaces;
         outcome.thinnest = measured.thinnest;
-        bool kept = outcome.distance < base.distance;
+        bool kept = outcome.distance < base.distance && outcome.mesh.vertexCount() <= maxVertices;
         if (kept) {
             measureShape(run, first);
             measureShape(run, outcome);
@@ -277,7 +289,7 @@ void remeshThinPartsAgain(RemeshRun& run)
     result.thinParts.added = best.sampleCount - first.sampleCount;
     result.thinParts.faces = best.thinFaces;
     result.thinParts.thinnest = best.thinnest / run.frame.scale;
-    result.thinParts.capped = best.sampleCount >= maxSamples;
+    result.thinParts.capped = best.sampleCount >= maxSampleFactorCount || best.mesh.vertexCount() >= 0.97 * maxVertices;
     const std::string warning = thinPartsWarning(run, first, best);
     restoreOutcome(run, std::move(best));
     result.warnings.insert(result.warnings.begin() + static_cast<std::ptrdiff_t>(before.size()), warning);
