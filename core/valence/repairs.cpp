@@ -83,24 +83,38 @@ bool searchOnSurface(ValenceMesh& mesh, int v, int maxSteps, double smallestStep
     return bestPos != start;
 }
 
-//! One vertex of raiseSmallestAngles; returns whether it moved.
-bool raiseAnglesAround(ValenceMesh& mesh, SagGuard& sag, int v)
-{
-    if (!repairMovable(mesh, v)) return false;
-    const std::vector<int>& faces = mesh.facesOf(v);
-    double angleBefore, dotBefore;
-    mesh.localShape(faces, angleBefore, dotBefore);
-    const double sagLimit = sag.repairLimit(faces);
-    const double minDot = std::min(kMinNormalDot, dotBefore);
-    double best = angleBefore;
-    auto improves = [&] {
+//! What the angle repair asks of a move of v: a larger smallest angle around v than the best so
+//! far, no face folding past kMinNormalDot (or past where it started), none sagging over the guard.
+struct AngleGoal {
+    AngleGoal(ValenceMesh& mesh_, SagGuard& sag_, int v) : mesh(mesh_), sag(sag_), faces(mesh_.facesOf(v))
+    {
+        double dotBefore;
+        mesh.localShape(faces, best, dotBefore);
+        sagLimit = sag.repairLimit(faces);
+        minDot = std::min(kMinNormalDot, dotBefore);
+    }
+    //! Whether v where it is now is the best place so far (and keeps its angle if so).
+    bool improves()
+    {
         double angle, dot;
         mesh.localShape(faces, angle, dot);
         if (!(angle > best + 1e-9 && dot >= minDot && !sag.exceedsAny(faces, sagLimit))) return false;
         best = angle;
         return true;
-    };
-    return searchOnSurface(mesh, v, kAngleRepairMaxSteps, 1.0 / 32, improves, [] { return false; });
+    }
+    ValenceMesh& mesh;
+    SagGuard& sag;
+    const std::vector<int>& faces;
+    double best = 0, sagLimit = 0, minDot = 0;
+};
+
+//! One vertex of raiseSmallestAngles; returns whether it moved.
+bool raiseAnglesAround(ValenceMesh& mesh, SagGuard& sag, int v)
+{
+    if (!repairMovable(mesh, v)) return false;
+    AngleGoal goal(mesh, sag, v);
+    return searchOnSurface(
+        mesh, v, kAngleRepairMaxSteps, 1.0 / 32, [&] { return goal.improves(); }, [] { return false; });
 }
 
 //! One Boundary vertex of raiseSmallestAngles: slides along the input's border (the pieces of it
@@ -123,12 +137,7 @@ bool slideAlongBorder(ValenceMesh& mesh, SagGuard& sag, int v)
         if (squared <= reach * reach) near.push_back(segment);
     }
     if (near.empty()) return false;
-    const std::vector<int>& faces = mesh.facesOf(v);
-    double angleBefore, dotBefore;
-    mesh.localShape(faces, angleBefore, dotBefore);
-    const double sagLimit = sag.repairLimit(faces);
-    const double minDot = std::min(kMinNormalDot, dotBefore);
-    double best = angleBefore;
+    AngleGoal goal(mesh, sag, v);
     Vec3 bestPos = start;
     ClosestPoint bestClosest = mesh.data(v).closest;
     double step = kAngleRepairStep * edgeLength;
@@ -151,10 +160,7 @@ bool slideAlongBorder(ValenceMesh& mesh, SagGuard& sag, int v)
             const Vec3 onBorder = closestPointOnSegments(q, near);
             if ((onBorder - q).norm() > 0.5 * step || (onBorder - start).norm() > kAngleRepairDrift * edgeLength) continue;
             mesh.place(v, onBorder, mesh.surface().tree.closest(onBorder, centreClosest.face));
-            double angle, dot;
-            mesh.localShape(faces, angle, dot);
-            if (angle > best + 1e-9 && dot >= minDot && !sag.exceedsAny(faces, sagLimit)) {
-                best = angle;
+            if (goal.improves()) {
                 bestPos = mesh.position(v), bestClosest = mesh.data(v).closest;
                 improved = true;
             }
