@@ -1,5 +1,6 @@
 #include "mesh_edges.h"
 
+#include "disjoint_sets.h"
 #include "errors.h"
 
 #include <algorithm>
@@ -82,6 +83,21 @@ EdgeTable buildEdgeTable(const std::vector<Face>& faces, int vertexCount, Repeat
     }
     table.first.push_back(static_cast<int>(entries.size()));
     return table;
+}
+
+std::vector<int> faceComponents(const EdgeTable& edges, int faceCount, int& count)
+{
+    DisjointSets sets(faceCount);
+    for (int e = 0; e < edges.edgeCount(); ++e)
+        for (int i = 1; i < edges.faceCount(e); ++i) sets.unite(edges.face(e, 0), edges.face(e, i));
+    std::vector<int> label(faceCount, -1), component(faceCount);
+    count = 0;
+    for (int f = 0; f < faceCount; ++f) {
+        const int root = sets.find(f);
+        if (label[root] < 0) label[root] = count++;
+        component[f] = label[root];
+    }
+    return component;
 }
 
 }  // namespace fieldcvt

@@ -68,4 +68,9 @@ inline EdgeTable buildEdgeTable(const TriMesh& mesh, RepeatedVertexFaces repeate
     return buildEdgeTable(mesh.faces, mesh.vertexCount(), repeated);
 }
 
+//! Per face, its connected component through shared edges (non-manifold ones included),
+//! numbered 0..count-1 in order of first face; `count` receives the number of components.
+//! Faces skipped by the table (a repeated corner) are components of their own.
+std::vector<int> faceComponents(const EdgeTable& edges, int faceCount, int& count);
+
 }  // namespace fieldcvt

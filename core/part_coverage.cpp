@@ -1,7 +1,6 @@
 #include "part_coverage.h"
 
 #include "closest_point.h"
-#include "disjoint_sets.h"
 #include "mesh_edges.h"
 #include "metrics.h"
 
@@ -13,24 +12,6 @@
 namespace fieldcvt {
 
 namespace {
-
-//! Per face, its connected component (through shared edges) numbered 0..count-1 in order of
-//! first face; `count` receives the number of components.
-std::vector<int> faceComponents(const TriMesh& mesh, int& count)
-{
-    const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
-    DisjointSets sets(mesh.faceCount());
-    for (int e = 0; e < edges.edgeCount(); ++e)
-        for (int i = 1; i < edges.faceCount(e); ++i) sets.unite(edges.face(e, 0), edges.face(e, i));
-    std::vector<int> label(mesh.faceCount(), -1), component(mesh.faceCount());
-    count = 0;
-    for (int f = 0; f < mesh.faceCount(); ++f) {
-        const int root = sets.find(f);
-        if (label[root] < 0) label[root] = count++;
-        component[f] = label[root];
-    }
-    return component;
-}
 
 struct Sample {
     Vec3 point;
@@ -96,8 +77,10 @@ std::vector<int> piecesPerPart(const TriMesh& output, const std::vector<int>& ou
 PartCoverage measurePartCoverage(const TriMesh& output, const TriMesh& input, const PartCoverageParams& params)
 {
     int inputComponents = 0, outputComponents = 0;
-    const std::vector<int> inputPart = faceComponents(input, inputComponents);
-    const std::vector<int> outputPiece = faceComponents(output, outputComponents);
+    const std::vector<int> inputPart =
+        faceComponents(buildEdgeTable(input, RepeatedVertexFaces::Skip), input.faceCount(), inputComponents);
+    const std::vector<int> outputPiece =
+        faceComponents(buildEdgeTable(output, RepeatedVertexFaces::Skip), output.faceCount(), outputComponents);
 
     std::vector<double> area(inputComponents, 0.0);
     double totalArea = 0;

@@ -1,6 +1,5 @@
 #include "rdt.h"
 
-#include "disjoint_sets.h"
 #include "errors.h"
 #include "mesh_edges.h"
 #include "triangle_shape.h"
@@ -226,40 +225,37 @@ int dropDebris(RdtResult& rdt, int maxFaces, double reach)
 {
     TriMesh& mesh = rdt.mesh;
     const int faceCount = mesh.faceCount();
-    const EdgeTable edges = buildEdgeTable(mesh);
-    DisjointSets sets(faceCount);
-    for (int e = 0; e < edges.edgeCount(); ++e)
-        for (int i = 1; i < edges.faceCount(e); ++i) sets.unite(edges.face(e, 0), edges.face(e, i));
-    std::vector<int> size(faceCount, 0);
-    for (int f = 0; f < faceCount; ++f) ++size[sets.find(f)];
+    int pieceCount = 0;
+    const std::vector<int> piece = faceComponents(buildEdgeTable(mesh), faceCount, pieceCount);
+    std::vector<int> size(pieceCount, 0);
+    for (int f = 0; f < faceCount; ++f) ++size[piece[f]];
     TriMesh rest;  // the faces of the larger pieces (vertices shared with `mesh`)
     rest.vertices = mesh.vertices;
     bool anySmall = false;
     for (int f = 0; f < faceCount; ++f) {
-        if (size[sets.find(f)] > maxFaces)
+        if (size[piece[f]] > maxFaces)
             rest.faces.push_back(mesh.faces[f]);
         else
             anySmall = true;
     }
     if (!anySmall || rest.faces.empty()) return 0;
     const ClosestPointTree tree(rest);
-    // Per small piece (by its root face): whether some vertex is farther than `reach` from the rest.
-    std::vector<char> far(faceCount, 0);
+    // Per small piece: whether some vertex is farther than `reach` from the rest.
+    std::vector<char> far(pieceCount, 0);
     for (int f = 0; f < faceCount; ++f) {
-        const int root = sets.find(f);
-        if (size[root] > maxFaces || far[root]) continue;
+        if (size[piece[f]] > maxFaces || far[piece[f]]) continue;
         for (int v : mesh.faces[f])
-            if (tree.closest(mesh.vertices[v]).squaredDistance > reach * reach) far[root] = 1;
+            if (tree.closest(mesh.vertices[v]).squaredDistance > reach * reach) far[piece[f]] = 1;
     }
-    std::vector<char> drop(faceCount, 0);
+    std::vector<char> drop(pieceCount, 0);
     int dropped = 0;
-    for (int f = 0; f < faceCount; ++f)
-        if (sets.find(f) == f && size[f] <= maxFaces && !far[f]) drop[f] = 1, ++dropped;
+    for (int c = 0; c < pieceCount; ++c)
+        if (size[c] <= maxFaces && !far[c]) drop[c] = 1, ++dropped;
     if (dropped == 0) return 0;
     rdt.debrisPieces += dropped;
     std::vector<Face> faces;
     for (int f = 0; f < faceCount; ++f)
-        if (!drop[sets.find(f)]) faces.push_back(mesh.faces[f]);
+        if (!drop[piece[f]]) faces.push_back(mesh.faces[f]);
     // Renumber the vertices the kept faces use, in their order.
     std::vector<int> index(mesh.vertices.size(), -1);
     std::vector<Vec3> vertices;

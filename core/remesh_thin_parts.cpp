@@ -222,13 +222,12 @@ void remeshThinPartsAgain(RemeshRun& run)
     const RemeshParams& p = run.params;
     RemeshResult& result = run.result;
     if (p.exactCount || !p.initialSamples.empty() || result.mesh.faces.empty()) return;
-    if (!thinPartsMayMend(computeTopology(result.mesh), result.inputTopology) &&
-        lostSurface(result.mesh, run.optSurface()).points.empty())
-        return;
+    PassOutcome first = takeOutcome(run);  // its topology and lost surface measured once
+    if (!thinPartsMayMend(first.topology, result.inputTopology) && first.lost.points.empty())
+        return restoreOutcome(run, std::move(first));
     // The warnings before the first optimisation: each pass adds its own after them.
-    const std::vector<std::string> before(result.warnings.begin(),
-                                          result.warnings.begin() + static_cast<std::ptrdiff_t>(run.optimisationWarnings));
-    PassOutcome first = takeOutcome(run);
+    const std::vector<std::string> before(first.warnings.begin(),
+                                          first.warnings.begin() + static_cast<std::ptrdiff_t>(run.optimisationWarnings));
     // Samples within maxVertexFactor × N, and output vertices within kMaxOutputVertexFactor × N:
     // on thin walls a cell falls into a piece on each side and each piece makes a vertex
     // (tray_bottom.stl at 554 samples: 1 020 vertices), so the samples may grow only as far as
