@@ -100,9 +100,39 @@ void EnergyFunction::setField(const DirectionField* field, const ClosestPointTre
     if (present && !walk_) walk_ = std::make_unique<SurfaceWalk>(surface_);
 }
 
+void EnergyFunction::setSideAware(const ClosestPointTree* tree)
+{
+    sideTree_ = tree;
+    sideFaces_.clear();
+    if (tree && !walk_) walk_ = std::make_unique<SurfaceWalk>(surface_);
+}
+
+const std::vector<Vec3>* EnergyFunction::sideNormalsAt(const std::vector<Vec3>& seeds)
+{
+    if (!sideTree_) return nullptr;
+    sideFaces_.resize(seeds.size(), -1);
+    sideNormals_.resize(seeds.size());
+#pragma omp parallel for schedule(static)
+    for (long long k = 0; k < static_cast<long long>(seeds.size()); ++k) {
+        // The sample's own sheet: a short walk from last time's face (the closest point unless
+        // another sheet comes nearer), the tree where the walk does not settle.
+        bool settled = false;
+        ClosestPoint cp;
+        if (sideFaces_[k] >= 0) cp = walk_->closestFrom(seeds[k], sideFaces_[k], &settled, true);
+        if (!settled) cp = sideTree_->closest(seeds[k], sideFaces_[k]);
+        sideFaces_[k] = cp.face;
+        const Vec3 n = faceNormal(surface_, cp.face);
+        const double length = n.norm();
+        sideNormals_[k] = length > 0 ? Vec3(n / length) : Vec3::Zero();
+    }
+    return &sideNormals_;
+}
+
 const RvdResult& EnergyFunction::diagram(const std::vector<Vec3>& seeds, const RvdOptions& options)
 {
-    diagram_.compute(seeds, options, rvd_);
+    RvdOptions sided = options;
+    sided.seedNormals = sideNormalsAt(seeds);
+    diagram_.compute(seeds, sided, rvd_);
     rvdOfSeeds_ = false;
     return rvd_;
 }
@@ -163,6 +193,7 @@ EnergyValue EnergyFunction::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& 
     for (size_t i = 0; i < seeds_.size(); ++i) seeds_[i] = x.segment<3>(3 * i);
     RvdOptions options;
     options.edges = field_ != nullptr;
+    options.seedNormals = sideNormalsAt(seeds_);
     diagram_.compute(seeds_, options, rvd_);
     rvdOfSeeds_ = true;
 

@@ -66,6 +66,11 @@ public:
     //! E at `x` (flattened seeds); writes ∂E/∂x into `gradient` (resized).
     EnergyValue evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& gradient);
 
+    //! Side-aware cells (RvdOptions::seedNormals) from now on, each sample's normal the face
+    //! normal at its closest point on the surface (`tree`, the surface's); null: off.
+    void setSideAware(const ClosestPointTree* tree);
+    bool sideAware() const { return sideTree_ != nullptr; }
+
     //! Computes the RVD of `seeds` with the requested extras (no energy bookkeeping).
     const RvdResult& diagram(const std::vector<Vec3>& seeds, const RvdOptions& options);
 
@@ -113,6 +118,12 @@ private:
     //! in every later one (sorting them again cost ~0.3 ms of one thread per evaluation at 5000
     //! samples; they move little, so the order stays nearly as coherent).
     std::vector<int> frameOrder_;
+    //! Side-aware cells: the tree (null: off), per sample its closest point's face (a hint for
+    //! the next evaluation) and that face's unit normal.
+    const ClosestPointTree* sideTree_ = nullptr;
+    std::vector<int> sideFaces_;
+    std::vector<Vec3> sideNormals_;
+    const std::vector<Vec3>* sideNormalsAt(const std::vector<Vec3>& seeds);
     std::unique_ptr<SurfaceWalk> walk_;  //!< on surface_, with a field: the frames' projections
     Eigen::VectorXd fieldGradient_;
     int evaluations_ = 0;

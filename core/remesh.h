@@ -224,6 +224,8 @@ struct RemeshResult {
         int faces = 0;        //!< faces of the optimisation surface thinner than the edge length allows
         double thinnest = 0;  //!< the smallest thickness measured, in input units (0: none thin)
         bool capped = false;  //!< the samples reached ThinPartParams::maxVertexFactor × the count asked for
+        //! The kept pass has side-aware cells (a sample owns nothing of the far side of a wall).
+        bool sideAwareCells = false;
     } thinParts;
 };
 

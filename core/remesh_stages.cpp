@@ -334,6 +334,7 @@ void setUpEnergy(RemeshRun& run)
             if (!treeBuilt) run.tree = std::make_unique<ClosestPointTree>(surface);
         });
     run.energy->onEvaluation = [&run](const EnergyValue& value) { onEvaluation(run, value); };
+    run.energy->setSideAware(run.sideAwareCells ? run.tree.get() : nullptr);
 }
 
 void computeFieldStage(RemeshRun& run)

@@ -104,6 +104,8 @@ struct RemeshRun {
     double expectedEvaluations = 0;  //!< for the progress percentage
     std::unique_ptr<EnergyFunction> energy;
     std::unique_ptr<const ClosestPointTree> tree;  //!< the optimisation surface's
+    //! Side-aware cells (RvdOptions::seedNormals): a pass of remeshThinPartsAgain.
+    bool sideAwareCells = false;
     // computeFieldStage.
     DirectionField field;
     FieldHierarchyLevels fieldHierarchy;  //!< the field's, for the lattice start (freed after it)

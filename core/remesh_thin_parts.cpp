@@ -37,6 +37,12 @@ constexpr double kThinPassSmallestAngle = 15;
 //! Nor more triangles with an angle under 30 degrees (%) than the first pass had, or this many.
 constexpr double kThinPassShareUnder30 = 0.5;
 
+//! Side-aware passes run only when the first pass's RDT had at least this many vertices per
+//! sample (cells in several pieces): casting.off at 637 has 1.43, tray_bottom.stl 1.85, where
+//! lato180.ply, adis16480.stl and many_small_holes.ply (1.00-1.03), on which they never won,
+//! would pay a second round of passes for nothing (lato180 at 11 179: 9.4 -> 19 s).
+constexpr double kSideAwareMinPiecesPerSample = 1.1;
+
 //! Where the RDT tore: the vertices of `mesh`'s border edges farther than an edge length from
 //! the surface's own border `surfaceBorder` (a closed surface: every border vertex).
 std::vector<Vec3> tornBorderPoints(const TriMesh& mesh, const std::vector<Segment>& surfaceBorder)
@@ -100,11 +106,13 @@ struct PassOutcome {
     int sampleCount = 0;
     std::vector<double> rho;
     TopologySummary topology;
-    LostSurface lost;  //!< the surface it lost
-    int distance = 0;  //!< topologyDistance from the input's, plus the lost surface's cells
+    LostSurface lost;          //!< the surface it lost
+    int topologyDistance = 0;  //!< from the input's topology
+    int distance = 0;          //!< topologyDistance plus the lost surface's cells
     bool shapeMeasured = false;
     double smallestAngle = 0;  //!< degrees, after the valence stage (when shapeMeasured)
     double shareUnder30 = 0;   //!< % of the triangles with an angle under 30 degrees, after it
+    bool sideAware = false;    //!< made with side-aware cells (RemeshRun::sideAwareCells)
     int thinFaces = 0;         //!< faces whose density the passes raised
     double thinnest = 0;       //!< the thinnest part they measured (working units)
 };
@@ -126,13 +134,15 @@ PassOutcome takeOutcome(RemeshRun& run)
     PassOutcome out;
     out.topology = computeTopology(run.result.mesh);
     out.lost = lostSurface(run.result.mesh, run.optSurface());
-    out.distance = topologyDistance(out.topology, run.result.inputTopology) + out.lost.cells;
+    out.topologyDistance = topologyDistance(out.topology, run.result.inputTopology);
+    out.distance = out.topologyDistance + out.lost.cells;
     out.mesh = std::move(run.result.mesh);
     out.roles = std::move(run.roles);
     out.vertexFaceHints = std::move(run.vertexFaceHints);
     out.warnings = run.result.warnings;
     out.sampleCount = run.sampleCount;
     out.rho = run.rho;
+    out.sideAware = run.sideAwareCells;
     return out;
 }
 
@@ -163,6 +173,7 @@ void restoreOutcome(RemeshRun& run, PassOutcome&& pass)
     run.result.warnings = std::move(pass.warnings);
     run.sampleCount = pass.sampleCount;
     run.rho = std::move(pass.rho);
+    run.sideAwareCells = pass.sideAware;
 }
 
 //! Raises run.rho to at least μ² on the thin parts near `focus` (everywhere when it has no
@@ -209,6 +220,7 @@ std::string thinPartsWarning(const RemeshRun& run, const PassOutcome& first, con
                   first.topology.genus, first.topology.boundaryLoops, first.topology.components, in.genus, in.boundaryLoops,
                   in.components);
     std::string warning = text;
+    if (kept.sideAware) warning = "with cells kept to their own side of walls thinner than them (side-aware cells), " + warning;
     if (first.lost.cells > 0)
         warning += ", and had lost about " + std::to_string(first.lost.cells) +
                    " cells' area of it (parts narrower than the edge length)";
@@ -217,81 +229,166 @@ std::string thinPartsWarning(const RemeshRun& run, const PassOutcome& first, con
 
 }  // namespace
 
+namespace {
+
+//! The passes after the first, and the best of them so far.
+class ThinPartPasses {
+public:
+    ThinPartPasses(RemeshRun& run, PassOutcome&& first) : run_(run), first_(std::move(first))
+    {
+        // The warnings before the first optimisation: each pass adds its own after them.
+        before_.assign(first_.warnings.begin(), first_.warnings.begin() + static_cast<std::ptrdiff_t>(run.optimisationWarnings));
+        // Samples within maxVertexFactor × N, and output vertices within kMaxOutputVertexFactor
+        // × N: on thin walls a plain cell falls into a piece on each side and each piece makes a
+        // vertex (tray_bottom.stl at 554 samples: 1 020 vertices), so the samples may grow only
+        // as far as the vertices per sample of the pass they start from allow, and a pass over
+        // it is not kept.
+        maxVertices_ = static_cast<int>(std::floor(kMaxOutputVertexFactor * first_.sampleCount));
+        maxSampleFactorCount_ = static_cast<int>(std::floor(run.params.thinParts.maxVertexFactor * first_.sampleCount));
+    }
+
+    //! Passes with more vertices on thin parts, from the first pass's density: with plain cells,
+    //! then with side-aware ones (a sample owns nothing of the far side of a plate or wall
+    //! thinner than its cell, which plain cells tear or glue); the better of the two is kept.
+    void runAll()
+    {
+        densityPasses(false);
+        // Only where plain cells fell into pieces (each piece an RDT vertex): cells reaching
+        // across walls thinner than them, what side-aware cells change.
+        const double piecesPerSample = double(first_.mesh.vertexCount()) / std::max(1, first_.sampleCount);
+        if (base(false).distance == 0 || piecesPerSample < kSideAwareMinPiecesPerSample) return;
+        sameDensityPass(true);
+        densityPasses(true);
+        PassOutcome& side = best_[1];
+        if (side.sampleCount > 0 && (best_[0].sampleCount == 0 || better(side, best_[0]))) best_[0] = std::move(side);
+    }
+
+    //! Leaves the best pass (or the first) in `run`, with its warning and report.
+    void finish()
+    {
+        RemeshResult& result = run_.result;
+        PassOutcome& best = best_[0];
+        if (best.sampleCount == 0) return restoreOutcome(run_, std::move(first_));
+        result.thinParts.added = best.sampleCount - first_.sampleCount;
+        result.thinParts.faces = best.thinFaces;
+        result.thinParts.thinnest = best.thinnest / run_.frame.scale;
+        result.thinParts.capped = best.sampleCount >= maxSampleFactorCount_ || best.mesh.vertexCount() >= 0.97 * maxVertices_;
+        result.thinParts.sideAwareCells = best.sideAware;
+        const std::string warning = thinPartsWarning(run_, first_, best);
+        restoreOutcome(run_, std::move(best));
+        result.warnings.insert(result.warnings.begin() + static_cast<std::ptrdiff_t>(before_.size()), warning);
+    }
+
+private:
+    //! The best pass so far with plain (false) or side-aware (true) cells, or the first.
+    const PassOutcome& base(bool sideAware) const
+    {
+        const PassOutcome& best = best_[sideAware ? 1 : 0];
+        return best.sampleCount > 0 ? best : first_;
+    }
+
+    //! Whether `outcome` replaces `base`: nearer the input's topology, within the vertex budget
+    //! (the RDT's count: the valence stage's splits and collapses change it by a percent or
+    //! so), without slivers the first pass did not have. A side-aware pass must not trade
+    //! topology for lost surface (measured: otherwise adis16480 at 459 vertices lost its
+    //! genus 4 and greek_helmet fell into 12 pieces, for fewer lost cells).
+    bool better(PassOutcome& outcome, const PassOutcome& base)
+    {
+        if (!(outcome.distance < base.distance && outcome.mesh.vertexCount() <= maxVertices_)) return false;
+        if (outcome.sideAware && outcome.topologyDistance > base.topologyDistance) return false;
+        measureShape(run_, first_);
+        measureShape(run_, outcome);
+        return outcome.smallestAngle >= std::min(first_.smallestAngle, kThinPassSmallestAngle) &&
+               outcome.shareUnder30 <= std::max(first_.shareUnder30, kThinPassShareUnder30);
+    }
+
+    PassOutcome optimiseAndExtract()
+    {
+        setUpEnergy(run_);
+        placeSamples(run_);
+        optimiseSamples(run_);
+        extractMesh(run_);
+        return takeOutcome(run_);
+    }
+
+    void startFrom(const PassOutcome& base, bool sideAware)
+    {
+        run_.result.warnings = before_;
+        run_.sampleCount = base.sampleCount;
+        run_.rho = base.rho;
+        run_.sideAwareCells = sideAware;
+    }
+
+    //! The best density so far again, with side-aware cells: a sample then owns nothing of the
+    //! far side of a plate or wall thinner than its cell, which plain cells tear or glue.
+    void sameDensityPass(bool sideAware)
+    {
+        const PassOutcome& base = this->base(sideAware);
+        startFrom(base, sideAware);
+        PassOutcome outcome = optimiseAndExtract();
+        outcome.thinFaces = base.thinFaces;
+        outcome.thinnest = base.thinnest;
+        if (better(outcome, base)) best_[sideAware ? 1 : 0] = std::move(outcome);
+    }
+
+    //! Up to kExtraPasses passes, each from the best density so far: one around the first
+    //! pass's tears and lost surface, then everywhere, each asking more of the thin parts.
+    void densityPasses(bool sideAware)
+    {
+        ThinPartParams params = run_.params.thinParts;
+        int passesInVain = 0;
+        for (int pass = 0; pass < kExtraPasses && passesInVain < kMaxPassesInVain; ++pass) {
+            const PassOutcome& base = this->base(sideAware);
+            if (base.distance == 0) break;
+            ThinPartFocus focus;
+            if (pass == 0) {
+                focus.points = tornBorderPoints(base.mesh, run_.border);
+                focus.points.insert(focus.points.end(), base.lost.points.begin(), base.lost.points.end());
+                focus.radius = kTearFocusEdges * kWorkingEdgeLength;
+                if (focus.points.empty()) continue;  // nothing tore or was lost (a genus lost): the next passes
+            }
+            startFrom(base, sideAware);
+            PassOutcome measured;
+            measured.thinFaces = base.thinFaces;
+            measured.thinnest = base.thinnest;
+            const double verticesPerSample = std::max(1.0, double(base.mesh.vertexCount()) / std::max(1, base.sampleCount));
+            const int maxSamples =
+                std::min(maxSampleFactorCount_, static_cast<int>(std::floor(maxVertices_ / verticesPerSample)));
+            const bool raised = raiseDensityOnThinParts(run_, focus, params, maxSamples, measured);
+            params.edgePerThickness /= kEdgeShrinkPerPass;
+            params.edgePerStripWidth /= kEdgeShrinkPerPass;
+            if (!raised) continue;
+            PassOutcome outcome = optimiseAndExtract();
+            outcome.thinFaces = measured.thinFaces;
+            outcome.thinnest = measured.thinnest;
+            if (better(outcome, base)) {
+                best_[sideAware ? 1 : 0] = std::move(outcome);
+                passesInVain = 0;
+            } else {
+                ++passesInVain;
+            }
+        }
+    }
+
+    RemeshRun& run_;
+    PassOutcome first_;
+    PassOutcome best_[2];  // the best later pass with plain and side-aware cells (sampleCount 0: none yet)
+    std::vector<std::string> before_;
+    int maxVertices_ = 0, maxSampleFactorCount_ = 0;
+};
+
+}  // namespace
+
 void remeshThinPartsAgain(RemeshRun& run)
 {
     const RemeshParams& p = run.params;
-    RemeshResult& result = run.result;
-    if (p.exactCount || !p.initialSamples.empty() || result.mesh.faces.empty()) return;
+    if (p.exactCount || !p.initialSamples.empty() || run.result.mesh.faces.empty()) return;
     PassOutcome first = takeOutcome(run);  // its topology and lost surface measured once
-    if (!thinPartsMayMend(first.topology, result.inputTopology) && first.lost.points.empty())
+    if (!thinPartsMayMend(first.topology, run.result.inputTopology) && first.lost.points.empty())
         return restoreOutcome(run, std::move(first));
-    // The warnings before the first optimisation: each pass adds its own after them.
-    const std::vector<std::string> before(first.warnings.begin(),
-                                          first.warnings.begin() + static_cast<std::ptrdiff_t>(run.optimisationWarnings));
-    // Samples within maxVertexFactor × N, and output vertices within kMaxOutputVertexFactor × N:
-    // on thin walls a cell falls into a piece on each side and each piece makes a vertex
-    // (tray_bottom.stl at 554 samples: 1 020 vertices), so the samples may grow only as far as
-    // the vertices per sample of the pass they start from allow, and a pass over it is not kept.
-    const int maxVertices = static_cast<int>(std::floor(kMaxOutputVertexFactor * first.sampleCount));
-    const int maxSampleFactorCount = static_cast<int>(std::floor(p.thinParts.maxVertexFactor * first.sampleCount));
-    PassOutcome best;  // the best later pass (sampleCount 0: none yet)
-    ThinPartParams params = p.thinParts;
-    int passesInVain = 0;
-    for (int pass = 0; pass < kExtraPasses && passesInVain < kMaxPassesInVain; ++pass) {
-        const PassOutcome& base = best.sampleCount > 0 ? best : first;
-        if (base.distance == 0) break;
-        // From the best density so far: around the first pass's tears, then everywhere.
-        ThinPartFocus focus;
-        if (pass == 0) {
-            focus.points = tornBorderPoints(base.mesh, run.border);
-            focus.points.insert(focus.points.end(), base.lost.points.begin(), base.lost.points.end());
-            focus.radius = kTearFocusEdges * kWorkingEdgeLength;
-            if (focus.points.empty()) continue;  // nothing tore or was lost (a genus lost): the next passes
-        }
-        result.warnings = before;
-        run.sampleCount = base.sampleCount;
-        run.rho = base.rho;
-        PassOutcome measured;
-        measured.thinFaces = base.thinFaces;
-        measured.thinnest = base.thinnest;
-        const double verticesPerSample = std::max(1.0, double(base.mesh.vertexCount()) / std::max(1, base.sampleCount));
-        const int maxSamples = std::min(maxSampleFactorCount, static_cast<int>(std::floor(maxVertices / verticesPerSample)));
-        const bool raised = raiseDensityOnThinParts(run, focus, params, maxSamples, measured);
-        params.edgePerThickness /= kEdgeShrinkPerPass;
-        params.edgePerStripWidth /= kEdgeShrinkPerPass;
-        if (!raised) continue;
-        setUpEnergy(run);
-        placeSamples(run);
-        optimiseSamples(run);
-        extractMesh(run);
-        // Kept when nearer the input's topology, within the vertex budget (the RDT's count: the
-        // valence stage's splits and collapses change it by a percent or so), without slivers the
-        // first pass did not have.
-        PassOutcome outcome = takeOutcome(run);
-        outcome.thinFaces = measured.thinFaces;
-        outcome.thinnest = measured.thinnest;
-        bool kept = outcome.distance < base.distance && outcome.mesh.vertexCount() <= maxVertices;
-        if (kept) {
-            measureShape(run, first);
-            measureShape(run, outcome);
-            kept = outcome.smallestAngle >= std::min(first.smallestAngle, kThinPassSmallestAngle) &&
-                   outcome.shareUnder30 <= std::max(first.shareUnder30, kThinPassShareUnder30);
-        }
-        if (kept) {
-            best = std::move(outcome);
-            passesInVain = 0;
-        } else {
-            ++passesInVain;
-        }
-    }
-    if (best.sampleCount == 0) return restoreOutcome(run, std::move(first));
-    result.thinParts.added = best.sampleCount - first.sampleCount;
-    result.thinParts.faces = best.thinFaces;
-    result.thinParts.thinnest = best.thinnest / run.frame.scale;
-    result.thinParts.capped = best.sampleCount >= maxSampleFactorCount || best.mesh.vertexCount() >= 0.97 * maxVertices;
-    const std::string warning = thinPartsWarning(run, first, best);
-    restoreOutcome(run, std::move(best));
-    result.warnings.insert(result.warnings.begin() + static_cast<std::ptrdiff_t>(before.size()), warning);
+    ThinPartPasses passes(run, std::move(first));
+    passes.runAll();
+    passes.finish();
 }
 
 }  // namespace fieldcvt

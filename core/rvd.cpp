@@ -54,6 +54,17 @@ std::vector<int> mortonIndexOrder(const std::vector<Vec3>& points)
 
 namespace {
 
+}  // namespace
+
+std::array<int, 3> canonicalTriangleOf(int a, int b, int c)
+{
+    if (a < b && a < c) return {a, b, c};
+    if (b < a && b < c) return {b, c, a};
+    return {c, a, b};
+}
+
+namespace {
+
 std::array<int, 3> canonicalTriangle(int a, int b, int c)
 {
     // Rotate so the smallest index comes first; the cyclic order (orientation) is kept.
@@ -133,6 +144,8 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
     if (seeds.empty()) throw InvalidInputError("restricted Voronoi diagram needs at least one seed");
     Impl& m = *impl_;
     m.seeds = &seeds;
+    m.seedNormals = options.seedNormals;
+    m.minSideCos = options.minSideCos;
     const int fromCandidates = m.buildNeighbourLists();
     m.computeVertexSeeds(options.borderFacesOnly);
 
@@ -310,6 +323,9 @@ void RestrictedVoronoiDiagram::Impl::buildPieces(RvdResult& result) const
                                           : pieceNear(-1 - raw.corner[k], raw.face);
             result.pieceTriangles.push_back(canonicalTriangle(t[0], t[1], t[2]));
         }
+    if (seedNormals)
+        addSeamTriangles(
+            chunkStart, fragments, [&](int g) { return pieceOfRoot[find(g)]; }, result);
     std::sort(result.pieceTriangles.begin(), result.pieceTriangles.end());
     result.pieceTriangles.erase(std::unique(result.pieceTriangles.begin(), result.pieceTriangles.end()),
                                 result.pieceTriangles.end());
@@ -317,6 +333,83 @@ void RestrictedVoronoiDiagram::Impl::buildPieces(RvdResult& result) const
         result.triangles.push_back(canonicalTriangle(result.pieceSeed[t[0]], result.pieceSeed[t[1]], result.pieceSeed[t[2]]));
     std::sort(result.triangles.begin(), result.triangles.end());
     result.triangles.erase(std::unique(result.triangles.begin(), result.triangles.end()), result.triangles.end());
+}
+
+}  // namespace fieldcvt
+
+namespace fieldcvt {
+
+void RestrictedVoronoiDiagram::Impl::addSeamTriangles(const std::vector<int>& chunkStart, const std::vector<Fragment>& fragments,
+                                                      const std::function<int(int)>& pieceOf, RvdResult& result) const
+{
+    // Side-aware cells are not continuous across an input edge between faces whose seeds
+    // differ (a plate's crease): the cells on either side meet along the edge without a
+    // bisector, so no RVD vertex joins them. Each change of cell along such an edge, on
+    // either side, is such a junction: zip the two sides' sequences of cells into triangles.
+    struct Span {
+        int face, edge;
+        double from, to;
+        int fragment;  // global
+    };
+    std::vector<Span> spans;
+    for (size_t c = 0; c < chunks.size(); ++c)
+        for (const FragmentLink& link : chunks[c].links) {
+            const int g = chunkStart[c] + link.fragment;
+            spans.push_back({fragments[g].face, link.edge, std::min(link.from, link.to), std::max(link.from, link.to), g});
+        }
+    std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) {
+        if (a.face != b.face) return a.face < b.face;
+        if (a.edge != b.edge) return a.edge < b.edge;
+        return a.from < b.from;
+    });
+    // Index: (face, edge) -> first span.
+    std::vector<int> first(3 * faces.size() + 1, -1);
+    for (int k = static_cast<int>(spans.size()) - 1; k >= 0; --k) first[3 * spans[k].face + spans[k].edge] = k;
+    auto range = [&](int face, int edge, int& begin, int& end) {
+        begin = first[3 * face + edge];
+        end = begin;
+        while (end >= 0 && end < static_cast<int>(spans.size()) && spans[end].face == face && spans[end].edge == edge) ++end;
+    };
+    std::vector<std::pair<double, int>> sideB;
+    for (int t = 0; t < static_cast<int>(faces.size()); ++t)
+        for (int e = 0; e < 3; ++e) {
+            const int u = neighbourFace[3 * t + e];
+            if (u < t) continue;  // each shared edge once (u < 0: a border)
+            int eu = -1;
+            for (int k = 0; k < 3; ++k)
+                if (neighbourFace[3 * u + k] == t) eu = k;
+            if (eu < 0) continue;
+            int a0, a1, b0, b1;
+            range(t, e, a0, a1);
+            range(u, eu, b0, b1);
+            if (a0 < 0 || b0 < 0) continue;
+            // Side B along t's direction (u runs the edge the other way).
+            sideB.clear();
+            for (int k = b1 - 1; k >= b0; --k) sideB.push_back({1.0 - spans[k].from, spans[k].fragment});
+            bool same = a1 - a0 == static_cast<int>(sideB.size());
+            for (int k = 0; same && k < a1 - a0; ++k)
+                same = fragments[spans[a0 + k].fragment].seed == fragments[sideB[k].second].seed;
+            if (same) continue;
+            int ia = a0, ib = 0;
+            const int nb = static_cast<int>(sideB.size());
+            auto emit = [&](int p, int q, int r) {
+                const int sp = fragments[p].seed, sq = fragments[q].seed, sr = fragments[r].seed;
+                if (sp == sq || sq == sr || sp == sr) return;
+                const int x = pieceOf(p), y = pieceOf(q), z = pieceOf(r);
+                result.pieceTriangles.push_back(canonicalTriangleOf(x, y, z));
+            };
+            while (ia + 1 < a1 || ib + 1 < nb) {
+                const double breakA = ia + 1 < a1 ? spans[ia].to : 2.0;
+                const double breakB = ib + 1 < nb ? sideB[ib].first : 2.0;  // B's span ib ends where it started, reversed
+                if (breakA <= breakB) {
+                    emit(spans[ia + 1].fragment, spans[ia].fragment, sideB[ib].second);
+                    ++ia;
+                } else {
+                    emit(spans[ia].fragment, sideB[ib].second, sideB[ib + 1].second);
+                    ++ib;
+                }
+            }
+        }
 }
 
 }  // namespace fieldcvt

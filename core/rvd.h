@@ -21,6 +21,11 @@ struct RvdOptions {
     //! Only the faces with a border edge (the cells' pieces elsewhere are skipped): the border
     //! figures are complete, mass / moment / energy only cover those faces.
     bool borderFacesOnly = false;
+    //! Side-aware cells: per seed a unit normal (the surface's at the seed), or null. A seed
+    //! then owns no part of a face whose normal is more than `maxSideAngle` away from its own
+    //! (the far side of a plate thinner than the cells).
+    const std::vector<Vec3>* seedNormals = nullptr;
+    double minSideCos = -0.5;
 };
 
 //! An RVD edge shared by the cells of seeds i < j, and its total length on the surface.

@@ -65,8 +65,8 @@ inline double RestrictedVoronoiDiagram::Impl::maxSquaredDistance(const Polygon& 
 // Always inlined into processTriangle, as when it was defined in the class: in this smaller file
 // GCC's unit-growth limit kept it apart (+1.3 % instructions on fertility 3000, one thread).
 [[gnu::always_inline]] inline const Polygon& RestrictedVoronoiDiagram::Impl::clipToCell(Polygon& poly, Polygon& spare, int i,
-                                                                                        Scratch& scratch,
-                                                                                        long long& clipped) const
+                                                                                        Scratch& scratch, long long& clipped,
+                                                                                        const Vec3* faceNormal) const
 {
     const Vec3& xi = (*seeds)[i];
     if (duplicate[i]) {
@@ -80,6 +80,7 @@ inline double RestrictedVoronoiDiagram::Impl::maxSquaredDistance(const Polygon& 
         if (d2 > 4.0 * radius2) return false;  // security radius reached: done
         // Coincident seeds: the lowest index keeps the cell, the others are ignored.
         if (duplicate[j]) return true;
+        if (faceNormal && !sideOk(j, *faceNormal)) return true;  // owns nothing of this face
         ++clipped;
         const int status = clipByBisector(*current, *other, xi, (*seeds)[j], static_cast<int>(j), radius2);
         if (status == 2) {
@@ -135,7 +136,35 @@ void RestrictedVoronoiDiagram::Impl::processTriangle(int t, const RvdOptions& op
     const Vec3 a = position[f[0]], b = position[f[1]], c = position[f[2]];
     // Convex cell, convex triangle: when one seed's cell holds all three corners it holds
     // the whole triangle, and no clipping is needed. This is most triangles.
-    const int s0 = vertexSeed[f[0]], s1 = vertexSeed[f[1]], s2 = vertexSeed[f[2]];
+    int s0 = vertexSeed[f[0]], s1 = vertexSeed[f[1]], s2 = vertexSeed[f[2]];
+    // Side-aware cells: seeds facing away from the face own none of it; when no seed near it
+    // faces it, all do (the face is never left uncovered).
+    const Vec3* sideNormal = nullptr;
+    if (seedNormals) {
+        constexpr int kSideSearch = 32;
+        uint32_t near[kSideSearch];
+        double nearDist2[kSideSearch];
+        bool anyOk = false;
+        for (int sv : {s0, s1, s2}) anyOk = anyOk || (sv >= 0 && sideOk(sv, nrm));
+        if (!anyOk) {
+            const Vec3 centroid = (a + b + c) / 3.0;
+            const int found = static_cast<int>(seedTree().knnSearch(centroid.data(), kSideSearch, near, nearDist2));
+            int firstOk = -1;
+            for (int q = 0; q < found && firstOk < 0; ++q)
+                if (sideOk(near[q], nrm)) firstOk = static_cast<int>(near[q]);
+            if (firstOk >= 0) {
+                sideNormal = &nrm;
+                if (!anyOk) s0 = firstOk, s1 = -1, s2 = -1;
+            }
+        } else {
+            sideNormal = &nrm;
+        }
+        if (sideNormal) {
+            if (s0 >= 0 && !sideOk(s0, nrm)) s0 = -1;
+            if (s1 >= 0 && !sideOk(s1, nrm)) s1 = -1;
+            if (s2 >= 0 && !sideOk(s2, nrm)) s2 = -1;
+        }
+    }
     if (s0 >= 0 && s0 == s1 && s1 == s2) {
         Polygon whole;
         whole.size = 3;
@@ -172,6 +201,7 @@ void RestrictedVoronoiDiagram::Impl::processTriangle(int t, const RvdOptions& op
                 treeQueried = true;
             }
             const int start = static_cast<int>(candidate[nextCandidate++]);
+            if (sideNormal && !sideOk(static_cast<uint32_t>(start), nrm)) continue;
             if (std::find(scratch.visited.begin(), scratch.visited.end(), start) != scratch.visited.end()) continue;
             scratch.stack.push_back(start);
             scratch.visited.push_back(start);
@@ -182,7 +212,7 @@ void RestrictedVoronoiDiagram::Impl::processTriangle(int t, const RvdOptions& op
         start.size = 3;
         start.point[0] = a, start.point[1] = b, start.point[2] = c;
         start.label[0] = -1, start.label[1] = -2, start.label[2] = -3;
-        const Polygon& poly = clipToCell(start, spare, i, scratch, out.clipped);
+        const Polygon& poly = clipToCell(start, spare, i, scratch, out.clipped, sideNormal);
         if (poly.size < 3) continue;
         anyPiece = true;
 
@@ -234,8 +264,15 @@ inline int RestrictedVoronoiDiagram::Impl::recordFragment(const Polygon& poly, i
     out.fragments.push_back(fragment);
     for (int k = 0; k < poly.size; ++k) {
         if (poly.label[k] >= 0) continue;
-        const int across = neighbourFace[3 * t + (-1 - poly.label[k])];
-        if (across >= 0) out.links.push_back({index, across});
+        const int e = -1 - poly.label[k];
+        const int across = neighbourFace[3 * t + e];
+        if (across < 0) continue;
+        const Vec3& v0 = position[faces[t][e]];
+        const Vec3 along = position[faces[t][(e + 1) % 3]] - v0;
+        const double len2 = along.squaredNorm();
+        const double from = len2 > 0 ? (poly.point[k] - v0).dot(along) / len2 : 0;
+        const double to = len2 > 0 ? (poly.point[(k + 1) % poly.size] - v0).dot(along) / len2 : 0;
+        out.links.push_back({index, across, e, from, to});
     }
     return index;
 }

@@ -8,11 +8,13 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
 
 namespace fieldcvt {
+std::array<int, 3> canonicalTriangleOf(int a, int b, int c);
 namespace rvd_detail {
 
 // A convex polygon inside one input triangle. label[k] names what created the edge from
@@ -58,6 +60,8 @@ struct Fragment {
 struct FragmentLink {
     int fragment;
     int face;
+    int edge;         // the edge of the fragment's face (from its corner `edge` to the next)
+    double from, to;  // the fragment's part of that edge, as parameters along it (0 .. 1)
 };
 
 // An RDT triangle found in input triangle `face`: corners are chunk-local fragment indices, or
@@ -121,6 +125,12 @@ struct RestrictedVoronoiDiagram::Impl {
 
     // Per evaluation.
     const std::vector<Vec3>* seeds = nullptr;
+    const std::vector<Vec3>* seedNormals = nullptr;
+    double minSideCos = -0.5;
+    bool sideOk(uint32_t j, const Vec3& faceNormal) const
+    {
+        return !seedNormals || (*seedNormals)[j].dot(faceNormal) > minSideCos;
+    }
     PointCloud cloud;  // the seeds, for their k-d tree (point_tree.h)
     // The k-d tree of the seeds, built on first use in an evaluation: with the candidate lists
     // most evaluations need it only for rare fallbacks (0.8 ms of ~15 for bunny 5000).
@@ -172,6 +182,8 @@ struct RestrictedVoronoiDiagram::Impl {
     // rvd.cpp
     Impl(const TriMesh& s, const std::vector<double>& faceDensity);
     void buildPieces(RvdResult& result) const;
+    void addSeamTriangles(const std::vector<int>& chunkStart, const std::vector<rvd_detail::Fragment>& fragments,
+                          const std::function<int(int)>& pieceOf, RvdResult& result) const;
 
     // rvd_neighbours.cpp (the inline ones are used there only: inline as when they were defined in
     // the class, so that the compiler inlines them into their loops; measured +5.7 %
@@ -234,7 +246,8 @@ struct RestrictedVoronoiDiagram::Impl {
     // radius around x_i cannot cut it (security radius), so neighbours are visited nearest
     // first until that holds. The clipped polygons alternate between `poly` and `spare` (no
     // copy per clip); returns the one holding the result (size 0: empty).
-    inline const Polygon& clipToCell(Polygon& poly, Polygon& spare, int i, Scratch& scratch, long long& clipped) const;
+    inline const Polygon& clipToCell(Polygon& poly, Polygon& spare, int i, Scratch& scratch, long long& clipped,
+                                     const Vec3* faceNormal) const;
     // All cells meeting input triangle t: start from the seed nearest to its centroid and walk
     // across shared bisector edges (cells meeting a convex polygon form a connected set).
     void processTriangle(int t, const RvdOptions& options, ChunkOutput& out, Scratch& scratch) const;

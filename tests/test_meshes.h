@@ -4,6 +4,7 @@
 #include "mesh.h"
 #include "mesh_check.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -109,6 +110,43 @@ inline TriMesh disk(int rings)
                 ++i;
             }
         }
+    }
+    return m;
+}
+
+//! A closed thin box [0, 1] x [0, thickness] x [0, 1] (a plate: top at y = thickness, bottom
+//! at y = 0), `cells` x `cells` squares on top and bottom, one row of them on each side wall;
+//! outward orientation.
+inline TriMesh thinBox(int cells, double thickness)
+{
+    TriMesh m;
+    std::map<std::array<long long, 3>, int> index;
+    auto vertex = [&](double x, double y, double z) {
+        const std::array<long long, 3> key{std::llround(x * 1e9), std::llround(y * 1e9), std::llround(z * 1e9)};
+        auto [it, added] = index.emplace(key, static_cast<int>(m.vertices.size()));
+        if (added) m.vertices.emplace_back(x, y, z);
+        return it->second;
+    };
+    // A quad a-b-c-d, counter-clockwise seen from outside.
+    auto quad = [&](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+        const int ia = vertex(a.x(), a.y(), a.z()), ib = vertex(b.x(), b.y(), b.z());
+        const int ic = vertex(c.x(), c.y(), c.z()), id = vertex(d.x(), d.y(), d.z());
+        m.faces.push_back({ia, ib, ic});
+        m.faces.push_back({ia, ic, id});
+    };
+    const double t = thickness;
+    for (int i = 0; i < cells; ++i)
+        for (int j = 0; j < cells; ++j) {
+            const double x0 = double(i) / cells, x1 = double(i + 1) / cells, z0 = double(j) / cells, z1 = double(j + 1) / cells;
+            quad({x0, t, z0}, {x0, t, z1}, {x1, t, z1}, {x1, t, z0});  // top, +y
+            quad({x0, 0, z0}, {x1, 0, z0}, {x1, 0, z1}, {x0, 0, z1});  // bottom, -y
+        }
+    for (int k = 0; k < cells; ++k) {
+        const double s0 = double(k) / cells, s1 = double(k + 1) / cells;
+        quad({s0, 0, 0}, {s0, t, 0}, {s1, t, 0}, {s1, 0, 0});  // z = 0, -z
+        quad({s0, 0, 1}, {s1, 0, 1}, {s1, t, 1}, {s0, t, 1});  // z = 1, +z
+        quad({0, 0, s0}, {0, 0, s1}, {0, t, s1}, {0, t, s0});  // x = 0, -x
+        quad({1, 0, s0}, {1, t, s0}, {1, t, s1}, {1, 0, s1});  // x = 1, +x
     }
     return m;
 }
