@@ -21,10 +21,16 @@ struct RvdOptions {
     //! Only the faces with a border edge (the cells' pieces elsewhere are skipped): the border
     //! figures are complete, mass / moment / energy only cover those faces.
     bool borderFacesOnly = false;
-    //! Side-aware cells: per seed a unit normal (the surface's at the seed), or null. A seed
-    //! then owns no part of a face whose normal is more than `maxSideAngle` away from its own
-    //! (the far side of a plate thinner than the cells).
+    //! Side-aware cells: per seed a unit normal (the surface's at the seed), or null (plain
+    //! cells). A seed then owns no part of a face whose unit normal n has n · n_seed <=
+    //! `minSideCos` (the far side of a plate or wall thinner than the cells); each face goes to
+    //! the nearest seed that may own it (to all, where none near it may). The cells are then
+    //! not continuous across an edge between faces whose owners differ (a plate's crease):
+    //! there the two sides' sequences of cells are zipped into seam triangles (RvdResult::
+    //! triangles), which close the RDT.
     const std::vector<Vec3>* seedNormals = nullptr;
+    //! -0.5: more than 120° apart (a plate's two sides, 180°, are; a right-angled crease,
+    //! 90°, is not).
     double minSideCos = -0.5;
 };
 
