@@ -37,10 +37,11 @@ constexpr double kThinPassSmallestAngle = 15;
 //! Nor more triangles with an angle under 30 degrees (%) than the first pass had, or this many.
 constexpr double kThinPassShareUnder30 = 0.5;
 
-//! Side-aware passes run only when the first pass's RDT had at least this many vertices per
-//! sample (cells in several pieces): casting.off at 637 has 1.43, tray_bottom.stl 1.85, where
-//! lato180.ply, adis16480.stl and many_small_holes.ply (1.00-1.03), on which they never won,
-//! would pay a second round of passes for nothing (lato180 at 11 179: 9.4 -> 19 s).
+//! Side-aware passes run only on closed inputs whose first pass's RDT had at least this many
+//! vertices per sample (cells in several pieces): casting.off at 637 has 1.43, tray_bottom.stl
+//! 1.85, where lato180.ply, adis16480.stl and many_small_holes.ply (1.00-1.03), on which they
+//! never won, would pay a second round of passes for nothing (lato180 at 11 179: 9.4 -> 19 s;
+//! greek_helmet.obj, open, 1.19-1.28: 1.6 -> 2.8 s, never won either).
 constexpr double kSideAwareMinPiecesPerSample = 1.1;
 
 //! Where the RDT tore: the vertices of `mesh`'s border edges farther than an edge length from
@@ -253,10 +254,13 @@ public:
     void runAll()
     {
         densityPasses(false);
-        // Only where plain cells fell into pieces (each piece an RDT vertex): cells reaching
-        // across walls thinner than them, what side-aware cells change.
+        // Only on closed shells (solids: walls) where plain cells fell into pieces (each piece
+        // an RDT vertex): cells reaching across walls thinner than them, what side-aware cells
+        // change.
         const double piecesPerSample = double(first_.mesh.vertexCount()) / std::max(1, first_.sampleCount);
-        if (base(false).distance == 0 || piecesPerSample < kSideAwareMinPiecesPerSample) return;
+        if (base(false).distance == 0 || run_.result.inputTopology.boundaryLoops > 0 ||
+            piecesPerSample < kSideAwareMinPiecesPerSample)
+            return;
         sameDensityPass(true);
         densityPasses(true);
         PassOutcome& side = best_[1];
