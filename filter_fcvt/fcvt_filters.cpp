@@ -9,11 +9,13 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <exception>
 #include <iterator>
 #include <map>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "closest_point.h"
@@ -95,6 +97,16 @@ FilterKind filterKind(FilterId filter)
     case kQuality:
     default: return FilterKind::MeasureAndVertexColouring;
     }
+}
+
+double typedValue(float value)
+{
+    if (!std::isfinite(value)) return value;
+    char text[64];
+    const std::to_chars_result written = std::to_chars(text, text + sizeof text, value);  // shortest round trip
+    double typed = value;
+    if (written.ec != std::errc() || std::from_chars(text, written.ptr, typed).ec != std::errc()) return value;
+    return typed;
 }
 
 int preConditions(FilterId) { return MeshModel::MM_FACENUMBER; }

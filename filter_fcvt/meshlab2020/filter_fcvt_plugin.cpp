@@ -42,10 +42,10 @@ public:
     bool hasParameter(const char* name) const override { return par_.hasParameter(name); }
     bool isBool(const char* name) const override { return par_.getParameterByName(name).value().isBool(); }
     int getInt(const char* name) const override { return par_.getInt(name); }
-    double getFloat(const char* name) const override { return par_.getFloat(name); }
+    double getFloat(const char* name) const override { return fcvt_plugin::typedValue(par_.getFloat(name)); }
     bool getBool(const char* name) const override { return par_.getBool(name); }
     int getEnum(const char* name) const override { return par_.getEnum(name); }
-    double getAbsPerc(const char* name) const override { return par_.getAbsPerc(name); }
+    double getAbsPerc(const char* name) const override { return fcvt_plugin::typedValue(par_.getAbsPerc(name)); }
     MeshModel* getMesh(const char* name) const override { return par_.getMesh(name); }
 
 private:
