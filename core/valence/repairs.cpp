@@ -14,7 +14,7 @@ namespace {
 
 // Tuning (the measurements: docs/tuning.md).
 //! Angle repair: rounds over the corners still under the minimum angle.
-constexpr int kAngleRepairRounds = 3;
+constexpr int kAngleRepairRounds = 8;
 //! The repairs' pattern search: first step in mean edge lengths (halved when nothing improves)...
 constexpr double kAngleRepairStep = 0.1;
 //! ... within this many edge lengths of where the vertex was...
