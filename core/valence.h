@@ -75,7 +75,7 @@ struct ValenceSurface {
 //! vertex of `mesh` (or is empty: then derived, Boundary on the mesh's border, Free elsewhere)
 //! and is kept in step with the vertices (a split vertex is Free, a collapse keeps the
 //! constrained end). A Free vertex on an edge of the mesh's border is treated, and returned, as
-//! Boundary. Boundary and Corner vertices do not move; Feature vertices slide along
+//! Boundary; a Boundary one on no border edge of the mesh as Free. Boundary and Corner vertices do not move; Feature vertices slide along
 //! `surface.features`, Free ones on the input surface. Border edges are never flipped or collapsed,
 //! nor edges between two Feature / Corner vertices; only Free vertices are split, and a
 //! collapse needs a Free end. V6% before and after are measured like computeQuality does.

@@ -634,3 +634,35 @@ TEST(Valence, AngleRepairSlidesBorderVerticesAlongTheBorder)
     EXPECT_LT((closestPointOnSegments(after, border) - after).norm(), 1e-9 * boundingBoxDiagonal(input));
     EXPECT_GT(smallestAround(mesh, moved), before + 5.0);
 }
+
+// A border sample that the mesh has inside (the RDT covered a hole smaller than its cells) is
+// not held on the input's border: returned as Free, it moves like any interior vertex, and a
+// sharp corner beside it is repaired (conrod.stl at 402 vertices, seed 4: an 11.2° sliver beside
+// such a vertex and a fixed corner).
+TEST(Valence, BoundaryVertexInsideTheMeshMovesAsAnInteriorOne)
+{
+    const TriMesh input = testmesh::icosphere(3);
+    TriMesh mesh = input;
+    std::vector<VertexRole> roles(mesh.vertices.size(), VertexRole::Free);
+    const int moved = 0;
+    roles[moved] = VertexRole::Boundary;
+    // Towards a neighbour, so that its faces are sharp.
+    int neighbour = -1;
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k)
+            if (f[k] == moved) neighbour = f[(k + 1) % 3];
+    ASSERT_GE(neighbour, 0);
+    mesh.vertices[moved] = (0.35 * mesh.vertices[moved] + 0.65 * mesh.vertices[neighbour]).normalized();
+    const double before = computeQuality(mesh).thetaMin;
+    ASSERT_LT(before, 30.0);
+
+    ClosestPointTree tree(input);
+    const ValenceSurface surface{input, tree, {}, nullptr, {}};
+    ValenceParams params;
+    params.maxRounds = 0;
+    params.lookAheadDepth = 0;
+    params.relaxIterations = 0;
+    optimizeValence(mesh, roles, surface, params);
+    EXPECT_EQ(std::count(roles.begin(), roles.end(), VertexRole::Boundary), 0);
+    EXPECT_GT(computeQuality(mesh).thetaMin, before + 5.0);
+}
