@@ -100,6 +100,17 @@ void EnergyFunction::setField(const DirectionField* field, const ClosestPointTre
     if (present && !walk_) walk_ = std::make_unique<SurfaceWalk>(surface_);
 }
 
+ClosestPoint EnergyFunction::closestOnOwnSheet(const Vec3& point, const ClosestPointTree& tree, int faceHint) const
+{
+    // A short walk over the surface from the hint (the closest point unless another sheet comes
+    // nearer: the sample's own sheet), the tree where the walk does not settle or there is no hint.
+    bool settled = false;
+    ClosestPoint cp;
+    if (walk_ && faceHint >= 0) cp = walk_->closestFrom(point, faceHint, &settled, true);
+    if (!settled) cp = tree.closest(point, faceHint);
+    return cp;
+}
+
 void EnergyFunction::setSideAware(const ClosestPointTree* tree)
 {
     sideTree_ = tree;
@@ -114,12 +125,7 @@ const std::vector<Vec3>* EnergyFunction::sideNormalsAt(const std::vector<Vec3>& 
     sideNormals_.resize(seeds.size());
 #pragma omp parallel for schedule(static)
     for (long long k = 0; k < static_cast<long long>(seeds.size()); ++k) {
-        // The sample's own sheet: a short walk from last time's face (the closest point unless
-        // another sheet comes nearer), the tree where the walk does not settle.
-        bool settled = false;
-        ClosestPoint cp;
-        if (sideFaces_[k] >= 0) cp = walk_->closestFrom(seeds[k], sideFaces_[k], &settled, true);
-        if (!settled) cp = sideTree_->closest(seeds[k], sideFaces_[k]);
+        const ClosestPoint cp = closestOnOwnSheet(seeds[k], *sideTree_, sideFaces_[k]);
         sideFaces_[k] = cp.face;
         const Vec3 n = faceNormal(surface_, cp.face);
         const double length = n.norm();
@@ -175,10 +181,7 @@ FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vecto
         // the FCVT stage 0.49 -> 0.42 s; over seeds 1-4 on the nine rows the same figures on
         // torus, cylinder and fertility 3000 (the walks end on the tree's faces), elsewhere
         // within the seeds' spread.
-        bool settled = false;
-        ClosestPoint cp;
-        if (walk_ && faces[i] >= 0) cp = walk_->closestFrom(points[i], faces[i], &settled, true);
-        if (!settled) cp = tree_->closest(points[i], faces[i]);
+        const ClosestPoint cp = closestOnOwnSheet(points[i], *tree_, faces[i]);
         faces[i] = cp.face;
         const FieldSample s = interpolateField(surface_, *field_, cp.face, cp.barycentric);
         frames.normals[i] = s.normal;

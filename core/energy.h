@@ -124,6 +124,9 @@ private:
     std::vector<int> sideFaces_;
     std::vector<Vec3> sideNormals_;
     const std::vector<Vec3>* sideNormalsAt(const std::vector<Vec3>& seeds);
+    //! The closest point of `point` on its own sheet of the surface, from the face `faceHint`
+    //! of a nearby earlier answer (-1: none); `tree` is the surface's.
+    ClosestPoint closestOnOwnSheet(const Vec3& point, const ClosestPointTree& tree, int faceHint) const;
     std::unique_ptr<SurfaceWalk> walk_;  //!< on surface_, with a field: the frames' projections
     Eigen::VectorXd fieldGradient_;
     int evaluations_ = 0;

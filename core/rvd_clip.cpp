@@ -128,6 +128,30 @@ inline double RestrictedVoronoiDiagram::Impl::maxSquaredDistance(const Polygon& 
     }
 }
 
+bool RestrictedVoronoiDiagram::Impl::sideAwareStart(const Vec3& normal, const Vec3& centroid, int& s0, int& s1, int& s2) const
+{
+    int facing[3] = {s0, s1, s2};
+    bool any = false;
+    for (int& s : facing) {
+        if (s >= 0 && !sideOk(static_cast<uint32_t>(s), normal)) s = -1;
+        any = any || s >= 0;
+    }
+    if (any) {
+        s0 = facing[0], s1 = facing[1], s2 = facing[2];
+        return true;
+    }
+    constexpr int kSideSearch = 32;
+    uint32_t nearest[kSideSearch];
+    double nearestDist2[kSideSearch];
+    const int found = static_cast<int>(seedTree().knnSearch(centroid.data(), kSideSearch, nearest, nearestDist2));
+    for (int q = 0; q < found; ++q)
+        if (sideOk(nearest[q], normal)) {
+            s0 = static_cast<int>(nearest[q]), s1 = -1, s2 = -1;
+            return true;
+        }
+    return false;  // none faces it: plain cells, the corners' seeds as they were
+}
+
 void RestrictedVoronoiDiagram::Impl::processTriangle(int t, const RvdOptions& options, ChunkOutput& out, Scratch& scratch) const
 {
     const Face& f = faces[t];
@@ -137,34 +161,9 @@ void RestrictedVoronoiDiagram::Impl::processTriangle(int t, const RvdOptions& op
     // Convex cell, convex triangle: when one seed's cell holds all three corners it holds
     // the whole triangle, and no clipping is needed. This is most triangles.
     int s0 = vertexSeed[f[0]], s1 = vertexSeed[f[1]], s2 = vertexSeed[f[2]];
-    // Side-aware cells: seeds facing away from the face own none of it; when no seed near it
-    // faces it, all do (the face is never left uncovered).
-    const Vec3* sideNormal = nullptr;
-    if (seedNormals) {
-        constexpr int kSideSearch = 32;
-        uint32_t near[kSideSearch];
-        double nearDist2[kSideSearch];
-        bool anyOk = false;
-        for (int sv : {s0, s1, s2}) anyOk = anyOk || (sv >= 0 && sideOk(sv, nrm));
-        if (!anyOk) {
-            const Vec3 centroid = (a + b + c) / 3.0;
-            const int found = static_cast<int>(seedTree().knnSearch(centroid.data(), kSideSearch, near, nearDist2));
-            int firstOk = -1;
-            for (int q = 0; q < found && firstOk < 0; ++q)
-                if (sideOk(near[q], nrm)) firstOk = static_cast<int>(near[q]);
-            if (firstOk >= 0) {
-                sideNormal = &nrm;
-                if (!anyOk) s0 = firstOk, s1 = -1, s2 = -1;
-            }
-        } else {
-            sideNormal = &nrm;
-        }
-        if (sideNormal) {
-            if (s0 >= 0 && !sideOk(s0, nrm)) s0 = -1;
-            if (s1 >= 0 && !sideOk(s1, nrm)) s1 = -1;
-            if (s2 >= 0 && !sideOk(s2, nrm)) s2 = -1;
-        }
-    }
+    // Side-aware cells: seeds facing away from the face own none of it, so they do not start
+    // the walk; when no seed near it faces it, all do (the face is never left uncovered).
+    const Vec3* sideNormal = seedNormals && sideAwareStart(nrm, (a + b + c) / 3.0, s0, s1, s2) ? &nrm : nullptr;
     if (s0 >= 0 && s0 == s1 && s1 == s2) {
         Polygon whole;
         whole.size = 3;

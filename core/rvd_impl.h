@@ -251,6 +251,10 @@ struct RestrictedVoronoiDiagram::Impl {
     // All cells meeting input triangle t: start from the seed nearest to its centroid and walk
     // across shared bisector edges (cells meeting a convex polygon form a connected set).
     void processTriangle(int t, const RvdOptions& options, ChunkOutput& out, Scratch& scratch) const;
+    // Side-aware cells (seedNormals): the corners' seeds s0..s2 that may own the face with unit
+    // normal `normal`, or (none of them) the nearest seed to the centroid that may, in s0.
+    // False when no seed near the face may own it: then every seed may (s0..s2 unchanged).
+    bool sideAwareStart(const Vec3& normal, const Vec3& centroid, int& s0, int& s1, int& s2) const;
     // Records the polygon of cell i in input triangle t as a fragment: the closest point of x_i
     // on it, and a link across each input edge it reaches (the polygon of cell i in the face on
     // the other side shares that edge's part inside the cell, so the two are connected).
