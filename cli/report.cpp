@@ -100,7 +100,8 @@ nlohmann::ordered_json repairJson(bool enabled, const RepairReport& r)
             {"dropped_components", r.droppedComponents},
             {"dropped_area", r.droppedArea},
             {"dropped_area_fraction", r.droppedAreaFraction},
-            {"kept_small_components", r.keptSmallComponents}};
+            {"kept_small_components", r.keptSmallComponents},
+            {"kept_far_components", r.keptFarComponents}};
 }
 
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json)

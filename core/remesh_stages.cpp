@@ -385,6 +385,14 @@ void placeSamples(RemeshRun& run)
             run.fieldHierarchy = FieldHierarchyLevels{};
         } else if (p.initialSamples.empty()) {
             run.seeds = sampleSurface(run.optSurface(), run.sampleCount, p.seed, run.rho);  // uniform when rho is empty
+        }
+        if (p.initialSamples.empty()) {
+            // A small part kept on its own (RepairParams::farComponentEdges) may have drawn fewer
+            // samples than make a triangle of it.
+            const ClosestPointTree& tree = *run.tree;
+            topUpSmallComponents(
+                run.optSurface(), [&tree](const Vec3& x) { return tree.closest(x).face; },
+                static_cast<int>(p.repairParams.minFarComponentFloor), p.seed, run.seeds);
         } else {
             run.seeds.clear();
             for (const Vec3& x : p.initialSamples) run.seeds.push_back(run.frame.toWork(x));

@@ -3,6 +3,7 @@
 #include "disjoint_sets.h"
 #include "errors.h"
 #include "mesh_edges.h"
+#include "point_tree.h"
 #include "surface_gluing.h"
 #include "triple_hash.h"
 
@@ -335,6 +336,61 @@ void splitVertexFans(const std::vector<Face>& faces, const EdgeTable& edges, int
     }
 }
 
+//! Step 6, the components kept although too small for the budget because they are parts of
+//! their own (RepairParams::farComponentEdges): `small[root]` marks the components too small,
+//! `area[root]` holds each component's area. Nearest input vertices stand for the surface: the
+//! input's edges are short against the output's, so the distance is over-estimated by little.
+std::vector<char> farComponentsToKeep(const std::vector<Vec3>& pos, const std::vector<Face>& faces, DisjointSets& sets,
+                                      const std::vector<double>& area, double total, const std::vector<char>& small,
+                                      const RepairParams& params)
+{
+    const int faceCount = static_cast<int>(faces.size());
+    std::vector<char> keep(faceCount, 0);
+    const double budget = params.vertexBudget;
+    // Equilateral triangles, two per vertex, over the whole area.
+    const double edge = std::sqrt(2 * total / (std::sqrt(3.0) * budget));
+    std::vector<char> keptVertex(pos.size(), 0), candidate(faceCount, 0);
+    bool anyCandidate = false;
+    for (int f = 0; f < faceCount; ++f) {
+        const int root = sets.find(f);
+        if (!small[root])
+            for (int v : faces[f]) keptVertex[size_t(v)] = 1;
+        else if (budget * area[root] / total >= params.minFarComponentSamples)
+            candidate[root] = 1, anyCandidate = true;
+    }
+    if (!anyCandidate) return keep;
+    std::vector<Vec3> keptPoints;
+    for (size_t v = 0; v < pos.size(); ++v)
+        if (keptVertex[v]) keptPoints.push_back(pos[v]);
+    if (keptPoints.empty()) return keep;
+    PointCloud cloud{&keptPoints};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    tree.buildIndex();
+    std::vector<double> gap(faceCount, 0.0);  // per candidate root: its farthest vertex's distance
+    for (int f = 0; f < faceCount; ++f) {
+        const int root = sets.find(f);
+        if (!candidate[root]) continue;
+        for (int v : faces[f]) {
+            uint32_t nearest = 0;
+            double d2 = 0;
+            tree.knnSearch(pos[size_t(v)].data(), 1, &nearest, &d2);
+            gap[root] = std::max(gap[root], std::sqrt(d2));
+        }
+    }
+    std::vector<int> far;
+    for (int root = 0; root < faceCount; ++root)
+        if (candidate[root] && gap[root] > params.farComponentEdges * edge) far.push_back(root);
+    std::stable_sort(far.begin(), far.end(), [&](int a, int b) { return area[a] > area[b]; });
+    double added = 0;  // samples the kept ones are short of the floor
+    for (int root : far) {
+        const double shortOf = std::max(0.0, params.minFarComponentFloor - budget * area[root] / total);
+        if (added + shortOf > params.farComponentBudget * budget) break;
+        added += shortOf;
+        keep[root] = 1;
+    }
+    return keep;
+}
+
 //! Step 6: the faces kept once components (through glued edges) too small for the vertex budget
 //! are dropped.
 std::vector<char> keptFaces(const std::vector<Vec3>& pos, const std::vector<Face>& faces, const std::vector<int>& partner,
@@ -369,6 +425,15 @@ std::vector<char> keptFaces(const std::vector<Vec3>& pos, const std::vector<Face
                     continue;
                 }
                 drop[f] = 1;
+            }
+            const std::vector<char> far = farComponentsToKeep(pos, faces, sets, area, total, drop, params);
+            for (int f = 0; f < faceCount; ++f) {
+                if (!drop[f]) continue;
+                if (far[f]) {
+                    drop[f] = 0;
+                    ++report.keptFarComponents;
+                    continue;
+                }
                 ++report.droppedComponents;
                 droppedArea += area[f];
             }
@@ -423,6 +488,10 @@ void describeRepair(const RepairParams& params, RepairReport& report)
           << percent(report.droppedAreaFraction) << " of the surface";
         note(report.droppedComponents, s.str());
     }
+    if (report.keptFarComponents > 0)
+        inform(report.keptFarComponents, "small connected components kept: each lies over " +
+                                             std::to_string(int(params.farComponentEdges)) +
+                                             " edge lengths from the rest (dropping them would leave a gap)");
     if (report.keptSmallComponents > 0)
         note(report.keptSmallComponents, "connected components get fewer than " +
                                              std::to_string(int(params.minComponentSamples)) + " samples but hold over " +

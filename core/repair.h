@@ -20,7 +20,8 @@
 //  5. vertices whose faces form several fans (non-manifold vertices, the ends of the cuts) split
 //     into one vertex per fan;
 //  6. connected components too small for the vertex budget (fewer than minComponentSamples
-//     expected samples, and less than keepAreaFraction of the area) dropped; none left throws
+//     expected samples, less than keepAreaFraction of the area, and not a part of its own far
+//     from the rest: RepairParams::farComponentEdges) dropped; none left throws
 //     InvalidInputError saying how many vertices would keep the largest.
 // An input with an out-of-range index or a non-finite coordinate is returned as it is, for the
 // strict check to refuse with its message.
@@ -42,6 +43,16 @@ struct RepairParams {
     double minComponentSamples = 8;
     //! ... unless it holds at least this fraction of the area (kept, with a warning).
     double keepAreaFraction = 0.01;
+    //! ... or it lies farther than this many edge lengths (of vertexBudget vertices over the
+    //! whole area) from every component kept for its size: a part on its own, whose loss would
+    //! show as a gap in the output (d_H), not a crumb beside the rest. Kept then if it also
+    //! gets at least minFarComponentSamples expected samples (half a triangle's area: less
+    //! makes no triangle of the output's size), largest first while the samples they are
+    //! short of minFarComponentFloor come to at most farComponentBudget × vertexBudget.
+    double farComponentEdges = 2;
+    double minFarComponentSamples = 0.25;
+    double minFarComponentFloor = 3;  //!< the samples each kept far component gets at least (sampling.h)
+    double farComponentBudget = 0.02;
 };
 
 struct RepairReport {
@@ -62,6 +73,7 @@ struct RepairReport {
     double droppedArea = 0;           //!< their area, input units
     double droppedAreaFraction = 0;   //!< their share of the total area
     int keptSmallComponents = 0;      //!< too small for the budget but over keepAreaFraction
+    int keptFarComponents = 0;        //!< too small for the budget but far from the rest
     bool skipped = false;             //!< bad indices or coordinates: left to the strict check
     std::vector<std::string> notes;   //!< one line per step that changed the surface (warnings)
     //! One line per step that changed nothing a user sees (unreferenced vertices removed, exact

@@ -1,5 +1,6 @@
 #include "sampling.h"
 
+#include "disjoint_sets.h"
 #include "errors.h"
 
 #include <algorithm>
@@ -54,6 +55,51 @@ std::vector<Vec3> sampleSurface(const TriMesh& surface, int count, std::uint64_t
     std::vector<double> weight(faceDensity.size());
     for (size_t f = 0; f < weight.size(); ++f) weight[f] = std::sqrt(faceDensity[f]);  // μ_f = sqrt(ρ_f)
     return samplePoints(surface, count, seed, &weight);
+}
+
+int topUpSmallComponents(const TriMesh& surface, const std::function<int(const Vec3&)>& faceOf, int minimum, std::uint64_t seed,
+                         std::vector<Vec3>& points)
+{
+    const int faceCount = surface.faceCount();
+    DisjointSets sets(static_cast<int>(surface.vertices.size()));
+    for (const Face& t : surface.faces) sets.unite(t[0], t[1]), sets.unite(t[0], t[2]);
+    const int first = faceCount > 0 ? sets.find(surface.faces[0][0]) : -1;
+    bool several = false;
+    for (const Face& t : surface.faces) several |= sets.find(t[0]) != first;
+    if (!several) return 0;  // one component: only this test is paid
+    std::vector<int> pointsIn(surface.vertices.size(), 0);
+    std::vector<int> face(points.size());
+#pragma omp parallel for schedule(static)
+    for (long long i = 0; i < static_cast<long long>(points.size()); ++i) face[size_t(i)] = faceOf(points[size_t(i)]);
+    for (int f : face)
+        if (f >= 0 && f < faceCount) ++pointsIn[size_t(sets.find(surface.faces[f][0]))];
+    std::vector<std::vector<int>> facesOf(surface.vertices.size());  // of the components short of points
+    bool any = false;
+    for (int f = 0; f < faceCount; ++f) {
+        const int root = sets.find(surface.faces[f][0]);
+        if (pointsIn[size_t(root)] < minimum) facesOf[size_t(root)].push_back(f), any = true;
+    }
+    if (!any) return 0;
+    std::mt19937_64 rng(seed ^ 0x5bd1e9955bd1e995ULL);
+    int added = 0;
+    for (size_t root = 0; root < facesOf.size(); ++root) {
+        const std::vector<int>& faces = facesOf[root];
+        if (faces.empty()) continue;
+        std::vector<double> cumulative(faces.size());
+        double total = 0;
+        for (size_t k = 0; k < faces.size(); ++k) cumulative[k] = (total += faceArea(surface, faces[k]));
+        if (!(total > 0)) continue;
+        for (int s = pointsIn[root]; s < minimum; ++s, ++added) {
+            const double pick = unitInterval(rng()) * total;
+            const size_t k = std::min<size_t>(
+                size_t(std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin()), faces.size() - 1);
+            const double r1 = std::sqrt(unitInterval(rng())), r2 = unitInterval(rng());
+            const Face& t = surface.faces[faces[k]];
+            points.push_back((1 - r1) * surface.vertices[t[0]] + r1 * (1 - r2) * surface.vertices[t[1]] +
+                             r1 * r2 * surface.vertices[t[2]]);
+        }
+    }
+    return added;
 }
 
 }  // namespace fieldcvt

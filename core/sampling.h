@@ -4,6 +4,7 @@
 #include "mesh.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace fieldcvt {
@@ -16,6 +17,14 @@ std::vector<Vec3> sampleSurfaceUniform(const TriMesh& surface, int count, std::u
 //! (density.h: the number of samples per unit area is ∝ μ, not ρ). Empty `faceDensity` gives
 //! exactly sampleSurfaceUniform's points.
 std::vector<Vec3> sampleSurface(const TriMesh& surface, int count, std::uint64_t seed, const std::vector<double>& faceDensity);
+
+//! Adds samples to every connected component of `surface` (faces through shared vertices) that
+//! holds fewer than `minimum` of `points`, at random points of it (area-uniform, from `seed`):
+//! a small part kept on its own (repair.h) then becomes a piece of the output, not nothing.
+//! `faceOf` gives the face a point lies on; it is called only when the surface has several
+//! components. Returns how many points were added.
+int topUpSmallComponents(const TriMesh& surface, const std::function<int(const Vec3&)>& faceOf, int minimum, std::uint64_t seed,
+                         std::vector<Vec3>& points);
 
 //! Maps a 64-bit random word to [0, 1) with 53 bits (platform-independent, unlike
 //! std::uniform_real_distribution).

@@ -120,6 +120,37 @@ TEST(DensitySampling, SamplesFollowAreaTimesMu)
     for (size_t i = 0; i < uniform.size(); ++i) EXPECT_EQ(uniform[i], none[i]);
 }
 
+TEST(DensitySampling, SmallComponentsAreToppedUpToTheMinimum)
+{
+    // A square with 100 points and a far small square with 1: the small one gets 2 more, on it.
+    TriMesh surface = testmesh::planeGrid(10);
+    const TriMesh small = testmesh::planeGrid(2, 0.05);
+    const int base = surface.vertexCount();
+    for (const Vec3& p : small.vertices) surface.vertices.push_back(p + Vec3(3, 0, 0));
+    for (Face t : small.faces) surface.faces.push_back({t[0] + base, t[1] + base, t[2] + base});
+    std::vector<Vec3> points = sampleSurfaceUniform(testmesh::planeGrid(10), 100, 3);
+    points.push_back(Vec3(3.01, 0.01, 0));
+    // The face lookup needs only to tell the squares apart: the big one's first face, the small one's.
+    const int smallFace = testmesh::planeGrid(10).faceCount();
+    const auto faceOf = [smallFace](const Vec3& x) { return x.x() > 2 ? smallFace : 0; };
+    const std::vector<Vec3> before = points;
+    EXPECT_EQ(topUpSmallComponents(surface, faceOf, 3, 7, points), 2);
+    ASSERT_EQ(points.size(), before.size() + 2);
+    for (size_t i = 0; i < before.size(); ++i) EXPECT_EQ(points[i], before[i]);
+    for (size_t i = before.size(); i < points.size(); ++i) {
+        EXPECT_GE(points[i].x(), 3.0);
+        EXPECT_LE(points[i].x(), 3.05);
+    }
+    // Nothing short: nothing added; one component: the face lookup is not even called.
+    EXPECT_EQ(topUpSmallComponents(surface, faceOf, 3, 7, points), 0);
+    std::vector<Vec3> one = sampleSurfaceUniform(testmesh::planeGrid(10), 2, 3);
+    int calls = 0;
+    EXPECT_EQ(topUpSmallComponents(
+                  testmesh::planeGrid(10), [&](const Vec3&) { return ++calls, 0; }, 3, 7, one),
+              0);
+    EXPECT_EQ(calls, 0);
+}
+
 TEST(DensitySources, PerVertexDensityIsValidated)
 {
     const TriMesh surface = testmesh::torus(24, 12);

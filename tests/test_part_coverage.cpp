@@ -2,6 +2,7 @@
 // components under the area share are counted apart.
 #include "part_coverage.h"
 
+#include "remesh.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +93,34 @@ TEST(PartCoverage, NoOutputFacesLeaveEveryGapInfinite)
     ASSERT_EQ(c.parts.size(), 1u);
     EXPECT_TRUE(std::isinf(c.largestGap));
     EXPECT_EQ(c.mostPieces, 0);
+}
+
+// A fragmentary scan (issue 32, item 4): a patch and five fragments of 1.15-1.75 samples' area
+// at 400 vertices (under the 0.5 % that makes a part), 0.5-1.5 units (about 4-13 edge lengths)
+// beyond its border. They are too small for the 8 samples that make a surface, but dropping them
+// would leave gaps of that size: each comes back as a piece of its own (the 3 samples each gets
+// add 7.75, within 2 % of 400), with well-shaped triangles. Before, they were dropped.
+TEST(PartCoverage, FragmentsFarFromTheScanComeBackAsPiecesOfTheirOwn)
+{
+    const TriMesh patch = testmesh::planeGrid(30, 2.0);  // area 4: 0.01 per sample at 400
+    TriMesh input = patch;
+    for (int i = 0; i < 5; ++i) {
+        const double side = std::sqrt(0.01 * (1.15 + 0.15 * i));
+        input = joined(input, testmesh::planeGrid(2, side), Vec3(2.5 + 0.25 * i, 0.25 * i, 0.05 * i));
+    }
+    RemeshParams params;
+    params.vertexCount = 400;
+    const RemeshResult result = remesh(input, params);
+    const PartCoverage c = measurePartCoverage(result.mesh, input);
+    ASSERT_EQ(c.parts.size(), 1u);
+    EXPECT_EQ(c.smallParts, 5);
+    EXPECT_LT(c.largestGap, 2.0);
+    EXPECT_EQ(c.mostPieces, 1);
+    EXPECT_LT(c.smallPartsGap, 2.0);
+    EXPECT_EQ(result.repair.keptFarComponents, 5);
+    EXPECT_EQ(result.repair.droppedComponents, 0);
+    EXPECT_GE(result.metrics.thetaMin, 15.0);
+    EXPECT_LE(result.metrics.pctLt30, 0.5);
 }
 
 }  // namespace

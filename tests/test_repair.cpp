@@ -279,6 +279,53 @@ TEST(Repair, ComponentOverOnePercentIsKeptEvenWhenSmallForTheBudget)
     EXPECT_EQ(r.topology.components, 2);
 }
 
+TEST(Repair, SmallComponentFarFromTheRestIsKeptAndOneBesideItDropped)
+{
+    // A unit sphere (area 4π) and two copies of a patch with 0.5 % of its area: 1.5 samples each
+    // at 300 vertices, fewer than the 8 that make a surface. Edge length at 300 vertices: 0.22.
+    // One copy floats 0.05 off the sphere (a crumb beside it: dropped), the other 4 units away
+    // (a part of its own, whose loss would leave a gap of 4: kept).
+    const TriMesh sphere = testmesh::icosphere(3);
+    const double side = std::sqrt(0.005 * surfaceArea(sphere));
+    const TriMesh patch = testmesh::planeGrid(4, side);
+    const TriMesh input = combine(combine(sphere, moved(patch, 1, {-0.5 * side, -0.5 * side, 1.05})), moved(patch, 1, {5, 0, 0}));
+    const Repaired r = repairOf(input, 300);
+    EXPECT_EQ(r.repair.keptFarComponents, 1);
+    EXPECT_EQ(r.repair.droppedComponents, 1);
+    EXPECT_EQ(r.topology.components, 2);
+    double farthest = 0;
+    for (const Vec3& p : r.mesh.vertices) farthest = std::max(farthest, p.x());
+    EXPECT_GT(farthest, 5.0);
+    // Under a quarter of a sample (less than half an output triangle's area): dropped, far or not.
+    const Repaired fewer = repairOf(input, 40);
+    EXPECT_EQ(fewer.repair.keptFarComponents, 0);
+    EXPECT_EQ(fewer.repair.droppedComponents, 2);
+}
+
+TEST(Repair, FarSmallComponentsAreKeptLargestFirstWithinTheirShareOfTheBudget)
+{
+    // 20 far patches of 1 to 1.95 expected samples each at 300 vertices: each is short of the 3
+    // samples a kept one gets by 1.05 to 2; the 2 % of 300 (6 samples) they may add keep the
+    // largest 5 (1.05 + 1.10 + 1.15 + 1.20 + 1.25 = 5.75).
+    const TriMesh sphere = testmesh::icosphere(3);
+    TriMesh input = sphere;
+    // The total area T such that patch i's share of it is exactly (1 + 0.05 i) / 300: the
+    // patches hold 29.5 / 300 of T.
+    const double total = surfaceArea(sphere) / (1 - 29.5 / 300);
+    for (int i = 0; i < 20; ++i) {
+        const double samples = 1.0 + 0.05 * i;
+        const double side = std::sqrt(samples / 300 * total);
+        append(input, moved(testmesh::planeGrid(2, side), 1, {3.0 + 0.5 * i, 0, 0}));
+    }
+    const Repaired r = repairOf(input, 300);
+    EXPECT_EQ(r.repair.keptFarComponents, 5);
+    EXPECT_EQ(r.repair.droppedComponents, 15);
+    double nearest = 1e9;  // the kept patches are the last five (the largest), from x = 10.5 on
+    for (const Vec3& p : r.mesh.vertices)
+        if (p.x() > 2) nearest = std::min(nearest, p.x());
+    EXPECT_GE(nearest, 10.5);
+}
+
 TEST(Repair, BadInputIsLeftToTheStrictCheck)
 {
     TriMesh m = testmesh::planeGrid(2);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 32, item 4, where it holds today: with the default options, the Hausdorff distance of
+"""Issue 32, item 4, on every real-world run: with the default options, the Hausdorff distance of
 `fcvt remesh IN OUT.ply --vertices N` to the input (`d_h` of `fcvt metrics OUT --ref IN`) is at
 most Instant Meshes' at the same count, Instant Meshes run as ../shared/anchors/README.md says
 (`-r 6 -p 6 -v N -d`) on an OBJ copy of the input and measured the same way. Instant Meshes is a
