@@ -3,7 +3,9 @@
 #include <malloc.h>
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cinttypes>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -39,6 +41,10 @@ long long adviseHugePages()
     long long marked = 0;
     char line[512];
     while (std::fgets(line, sizeof line, maps)) {
+        // A mapped file's line names it by its path: most lines where libraries are many
+        // (inside MeshLab about 1 000 of 1 100), skipped before the parse (1.1 -> 0.8 ms a
+        // call there; the rest is the kernel writing the text).
+        if (std::strchr(line, '/') != nullptr) continue;
         std::uintptr_t begin = 0, end = 0;
         char perms[8] = {}, device[16] = {};
         unsigned long long offset = 0, inode = 0;
@@ -57,6 +63,23 @@ long long adviseHugePages()
 #else
     return 0;
 #endif
+}
+
+long long adviseNewHugePages()
+{
+    static std::mutex mutex;
+    static std::size_t markedAt = 0;  // what malloc held from the system at the last marking
+    const struct mallinfo2 info = mallinfo2();
+    const std::size_t held = info.arena + info.hblkhd;
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (markedAt != 0 && held < markedAt + kHugePage) {
+            markedAt = std::min(markedAt, held);  // given back (trimmed): growth counts from here
+            return -1;
+        }
+        markedAt = held;
+    }
+    return adviseHugePages();
 }
 
 HugePageHeap::HugePageHeap()

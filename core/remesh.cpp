@@ -111,7 +111,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     checkRemeshParams(params);
     const int threadCount = threadsForThisMachine(params.threads);
     const ThreadCountScope threads(threadCount);
-    const HugePageHeap heap;  // and adviseHugePages() before each stage (Pipeline::run)
+    const HugePageHeap heap;  // and adviseNewHugePages() before each stage (Pipeline::run)
     RemeshResult result;
     result.threads = threadCount;
     RemeshRun run(input, params, progress, result);

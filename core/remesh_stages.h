@@ -51,7 +51,7 @@ public:
     {
         const auto start = Clock::now();
         report(name, percent_);
-        adviseHugePages();  // the memory the earlier stages added, before this one works on it
+        adviseNewHugePages();  // the memory the earlier stages added, before this one works on it
         try {
             stage();
         } catch (const TimeLimitReached&) {

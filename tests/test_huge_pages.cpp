@@ -50,6 +50,19 @@ TEST(HugePages, MemoryAllocatedInTheScopeIsMarked)
     EXPECT_NE(after.find(" hg"), std::string::npos) << after;
 }
 
+TEST(HugePages, OnlyMemoryMallocAddedIsLookedFor)
+{
+    if (!hugePagesOnRequest()) GTEST_SKIP() << "this kernel gives no transparent huge pages";
+    const HugePageHeap heap;
+    adviseNewHugePages();
+    EXPECT_EQ(adviseNewHugePages(), -1) << "nothing was added: /proc/self/maps not read again";
+    // 64 MiB: over the scope's 32 MiB threshold, a mapping of its own, which malloc adds.
+    std::vector<char> block(64 << 20, 1);
+    EXPECT_GE(adviseNewHugePages(), 64 << 20);
+    const std::string flags = flagsOfMappingAt(block.data() + block.size() / 2);
+    EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+}
+
 TEST(HugePages, NestedScopesEndCleanly)
 {
     // The outermost scope gives the default pad back; an inner one leaves the outer's in place.
