@@ -7,7 +7,10 @@
 #      valence, the new layer and its figures, the times;
 #   6. one singularity count per mesh: the field filter and `fcvt field` (the input) agree, and the
 #      remesh log says which mesh its count is of and agrees with the CLI's report on that mesh;
-#   7. the log says how d_RMS / d_H were sampled.
+#   7. the log says how d_RMS / d_H were sampled;
+# and (issue 35 item 2) the filter's own time: one line after the stage times, its wall time at
+# least the core's (3 significant digits each), with the output's normals the core's (the CLI's),
+# not a search of the input.
 # Usage: log_order.sh SOURCE_DIR PLUGIN_SO WORK_DIR FCVT_CLI
 set -euo pipefail
 FCVT_SOURCE_DIR="$1"; plugin="$2"; work="$3"; cli="$4"
@@ -18,7 +21,7 @@ server="$(stage_meshlab "$work/stage" "$plugin")"
 cp "$FCVT_SOURCE_DIR/resources/bunny.ply" "$work/out/bunny.ply"
 mlx="$work/out/remesh-5000.mlx"
 sed 's/\(name="vertexCount"[^>]*value="\)[^"]*"/\15000"/' "$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx" > "$mlx"
-run_meshlabserver "$server" "$work/out/remesh.txt" -i "$work/out/bunny.ply" -o "$work/out/remeshed.ply" -s "$mlx"
+run_meshlabserver "$server" "$work/out/remesh.txt" -i "$work/out/bunny.ply" -o "$work/out/remeshed.ply" -m vn -s "$mlx"
 [ "$MLS_RC" -eq 0 ] || fail "remesh: meshlabserver exited with $MLS_RC"
 run_meshlabserver "$server" "$work/out/field.txt" -i "$work/out/bunny.ply" -o "$work/out/field.ply" \
   -s "$FCVT_SOURCE_DIR/resources/fcvt-field.mlx"
@@ -61,7 +64,45 @@ if count(remesh_field) != report["singularities"] or report.get("mesh", "") not 
 metrics = next(t for _, t in remesh if t.startswith("FCVT metrics:"))
 if "50000 random points per mesh" not in metrics:
     problems.append("the metrics line does not say how d_H was sampled: %r" % metrics)
-print("\n".join(problems) if problems else "levels, order, singularities and sampling as expected")
+# The filter's time: after the stage times, wall >= the core's total, which is the times line's.
+timing = [(i, t) for i, (_, t) in enumerate(remesh) if t.startswith("FCVT filter time:")]
+times_at = next(i for i, (_, t) in enumerate(remesh) if t.startswith("FCVT times ("))
+if len(timing) != 1 or timing[0][0] < times_at:
+    problems.append("no one filter time line after the stage times: %r" % timing)
+else:
+    wall, core, rest = map(float, re.search(r"time: ([0-9.e+-]+) s .*stages ([0-9.e+-]+) s, .* data ([0-9.e+-]+) s",
+                                          timing[0][1]).groups())
+    total = float(re.search(r"total ([0-9.e+-]+) s", remesh[times_at][1]).group(1))
+    if not (wall >= core > 0 and abs(core - total) <= 1e-3 * max(1.0, total) and abs(wall - core - rest) <= 0.006 * wall + 1e-3):
+        problems.append("filter time %g, core %g (times line %g), the rest %g" % (wall, core, total, rest))
+# The output's normals: the CLI's (the field's frames at the output vertices).
+def ply_vertices(path):
+    import struct
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().splitlines()
+    assert "format binary_little_endian 1.0" in header, header[:2]
+    count, props, in_vertex = 0, [], False
+    for line in header:
+        w = line.split()
+        if w[:2] == ["element", "vertex"]:
+            count, in_vertex = int(w[2]), True
+        elif w and w[0] == "element":
+            in_vertex = False
+        elif in_vertex and w[0] == "property":
+            props.append((w[2], {"float": "f", "double": "d", "uchar": "B", "int": "i"}[w[1]]))
+    fmt = "<" + "".join(t for _, t in props)
+    size = struct.calcsize(fmt)
+    names = [n for n, _ in props]
+    return [dict(zip(names, struct.unpack_from(fmt, data, end + k * size))) for k in range(count)]
+filt, cli = ply_vertices(os.path.join(out, "remeshed.ply")), ply_vertices(os.path.join(out, "cli.ply"))
+if len(filt) != len(cli) or "nx" not in filt[0]:
+    problems.append("filter output %d vertices (normals: %s), CLI %d" % (len(filt), "nx" in filt[0], len(cli)))
+else:
+    worst = max(abs(a[c] - b[c]) for a, b in zip(filt, cli) for c in ("nx", "ny", "nz"))
+    if worst > 1e-5:
+        problems.append("the filter's normals differ from the CLI's by up to %g" % worst)
+print("\n".join(problems) if problems else "levels, order, singularities, sampling, time and normals as expected")
 sys.exit(1 if problems else 0)
 PY
 echo "PASS"
