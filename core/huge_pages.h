@@ -10,13 +10,15 @@ namespace fieldcvt {
 //! Marks the process's anonymous private memory of at least one 2 MB page (the heap, malloc's
 //! arenas and mapped blocks, their reserved parts) with madvise(MADV_HUGEPAGE): pages touched
 //! after the call come as huge pages where 2 MB of a mapping are still untouched. remesh() calls
-//! it before each stage (adviseNewHugePages), so that what the last stage added is covered. Returns the bytes marked;
-//! 0 where the kernel has no such advice or /proc/self/maps cannot be read.
+//! it before each stage (through adviseNewHugePages), so that what the last stage added is
+//! covered. Returns the bytes marked; 0 where the kernel has no such advice or /proc/self/maps
+//! cannot be read.
 long long adviseHugePages();
 
 //! adviseHugePages(), but only when malloc holds at least 2 MB more memory from the system
 //! (heap, arenas, mapped blocks: mallinfo2) than when it last marked; returns -1 when it
-//! skipped. Reading /proc/self/maps costs 0.1 ms in the CLI and 0.4-0.8 ms inside MeshLab (its
+//! skipped (never where the allocator reports nothing to mallinfo2, e.g. AddressSanitizer's).
+//! Reading /proc/self/maps costs 0.1 ms in the CLI and 0.4-0.8 ms inside MeshLab (its
 //! 1 100 mappings of libraries and plugins), paid before each stage: 1-3 % of the filter's time
 //! (bench/filter_vs_cli.py).
 long long adviseNewHugePages();
