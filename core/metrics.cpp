@@ -416,7 +416,8 @@ double boundaryDistance(const TriMesh& mesh, const TriMesh& reference)
 
 // ---------------------------------------------------------------------------------------------
 
-DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, int samplesPerMesh)
+DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, int samplesPerMesh,
+                                const ClosestPointTree* referenceTree)
 {
     checkFaceIndices(mesh, "computeDistance (mesh)");
     checkFaceIndices(reference, "computeDistance (reference)");
@@ -431,7 +432,7 @@ DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, i
     // a mesh compared with itself is not sampled at identical points.
     // Sampling and tree building of the two sides are independent: one task each.
     std::vector<Vec3> meshSamples, referenceSamples;
-    std::unique_ptr<ClosestPointTree> meshTree, referenceTree;
+    std::unique_ptr<ClosestPointTree> meshTree, ownReferenceTree;
 #pragma omp parallel sections
     {
 #pragma omp section
@@ -442,9 +443,10 @@ DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, i
 #pragma omp section
         {
             referenceSamples = surfaceSamples(reference, samplesPerMesh, 0x46435654'72656600ULL);
-            referenceTree = std::make_unique<ClosestPointTree>(reference);
+            if (!referenceTree) ownReferenceTree = std::make_unique<ClosestPointTree>(reference);
         }
     }
+    if (!referenceTree) referenceTree = ownReferenceTree.get();
 
     const long long meshCount = static_cast<long long>(meshSamples.size());
     const long long total = meshCount + static_cast<long long>(referenceSamples.size());

@@ -1,5 +1,6 @@
 #pragma once
 // Remeshing quality figures of the paper's Table 2 (§5) and topology summaries.
+#include "closest_point.h"
 #include "mesh.h"
 
 #include <limits>
@@ -61,7 +62,10 @@ struct DistanceMetrics {
 
 //! Symmetric distances between `mesh` and `reference` from exact point-to-triangle distances on
 //! dense area-uniform samples of both surfaces (plus their vertices). Deterministic.
-DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, int samplesPerMesh = 200000);
+//! `referenceTree`, when given, is a closest-point tree of `reference` (the caller's, e.g. the
+//! remeshing's tree of its input): the same figures without building another.
+DistanceMetrics computeDistance(const TriMesh& mesh, const TriMesh& reference, int samplesPerMesh = 200000,
+                                const ClosestPointTree* referenceTree = nullptr);
 
 //! Symmetric Hausdorff distance between the open-boundary curves of `mesh` and `reference`
 //! (each sampled every 1e-4 of the reference's diagonal, exact distance to the other's

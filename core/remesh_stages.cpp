@@ -521,7 +521,12 @@ void measure(RemeshRun& run)
             const int samples = run.params.distanceSamples > 0
                                     ? run.params.distanceSamples
                                     : std::clamp(20 * (result.mesh.faceCount() + reference.faceCount()), 20000, 200000);
-            const DistanceMetrics d = computeDistance(result.mesh, reference, samples);
+            // The input's tree is there already (projectOnInput's; unsimplified, the
+            // optimisation's, on the same surface): 20-30 ms of a bunny's 0.14 s not spent again.
+            const ClosestPointTree* referenceTree = run.inputTree     ? run.inputTree.get()
+                                                    : !run.simplified ? run.tree.get()
+                                                                      : nullptr;
+            const DistanceMetrics d = computeDistance(result.mesh, reference, samples, referenceTree);
             result.metrics.dRms = d.rms;
             result.metrics.dH = d.hausdorff;
             if (!run.border.empty()) result.metrics.dBoundary = boundaryDistance(result.mesh, reference);
