@@ -15,10 +15,11 @@ import re
 import statistics
 import subprocess
 import sys
-import tempfile
 import time
 
 here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(here, "bench"))
+from filter_vs_cli import staged_meshlabserver  # noqa: E402
 a = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 a.add_argument("build")
 a.add_argument("--repeat", type=int, default=3)
@@ -26,12 +27,7 @@ a.add_argument("--busy", type=int, nargs="+", default=[0, 1, 2])
 a.add_argument("--vertices", type=int, default=5000)
 a.add_argument("--runs", action="store_true", help="also print every run's times")
 args = a.parse_args()
-fcvt = os.path.join(args.build, "cli", "fcvt")
-plugin = os.path.join(args.build, "filter_fcvt", "libfilter_fcvt.so")
-work = tempfile.mkdtemp(prefix="fcvt-busy-")
-subprocess.run(["bash", os.path.join(here, "scripts", "stage-meshlab.sh"), os.path.join(work, "stage"), plugin],
-               check=True, stdout=subprocess.DEVNULL)
-server = os.path.join(work, "stage", "bin", "meshlabserver")
+fcvt, server, work = staged_meshlabserver(args.build, "fcvt-busy-")
 source = os.path.join(here, "resources", "bunny.ply")
 mlx = os.path.join(work, "remesh.mlx")
 with open(os.path.join(here, "resources", "fcvt-remesh.mlx")) as fh:

@@ -27,6 +27,16 @@ sys.path.insert(0, HERE)
 from side_by_side import DEFAULT_ROWS, SHARED  # noqa: E402
 
 
+def staged_meshlabserver(build, prefix):
+    """The build's fcvt, a meshlabserver staged with the build's plugin, and the work folder."""
+    fcvt = os.path.join(build, "cli", "fcvt")
+    plugin = os.path.join(build, "filter_fcvt", "libfilter_fcvt.so")
+    work = tempfile.mkdtemp(prefix=prefix)
+    subprocess.run(["bash", os.path.join(ROOT, "scripts", "stage-meshlab.sh"), os.path.join(work, "stage"), plugin],
+                   check=True, stdout=subprocess.DEVNULL)
+    return fcvt, os.path.join(work, "stage", "bin", "meshlabserver"), work
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("build")
@@ -34,12 +44,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--runs", action="store_true", help="also print every run's times")
     a = ap.parse_args()
-    fcvt = os.path.join(a.build, "cli", "fcvt")
-    plugin = os.path.join(a.build, "filter_fcvt", "libfilter_fcvt.so")
-    work = tempfile.mkdtemp(prefix="fcvt-filter-cli-")
-    subprocess.run(["bash", os.path.join(ROOT, "scripts", "stage-meshlab.sh"), os.path.join(work, "stage"), plugin],
-                   check=True, stdout=subprocess.DEVNULL)
-    server = os.path.join(work, "stage", "bin", "meshlabserver")
+    fcvt, server, work = staged_meshlabserver(a.build, "fcvt-filter-cli-")
     with open(os.path.join(ROOT, "resources", "fcvt-remesh.mlx")) as fh:
         script = fh.read()
     env = {k: v for k, v in os.environ.items() if "OMP" not in k}
