@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <string>
 
@@ -73,18 +74,27 @@ int topUpSmallComponents(const TriMesh& surface, const std::function<int(const V
     for (long long i = 0; i < static_cast<long long>(points.size()); ++i) face[size_t(i)] = faceOf(points[size_t(i)]);
     for (int f : face)
         if (f >= 0 && f < faceCount) ++pointsIn[size_t(sets.find(surface.faces[f][0]))];
-    std::vector<std::vector<int>> facesOf(surface.vertices.size());  // of the components short of points
-    bool any = false;
+    // The faces of each component short of points, in the order of their roots.
+    std::vector<int> shortIndex(surface.vertices.size(), -1), shortRoot;
+    std::vector<std::vector<int>> facesOf;
     for (int f = 0; f < faceCount; ++f) {
         const int root = sets.find(surface.faces[f][0]);
-        if (pointsIn[size_t(root)] < minimum) facesOf[size_t(root)].push_back(f), any = true;
+        if (pointsIn[size_t(root)] >= minimum) continue;
+        if (shortIndex[size_t(root)] < 0) {
+            shortIndex[size_t(root)] = static_cast<int>(facesOf.size());
+            shortRoot.push_back(root);
+            facesOf.emplace_back();
+        }
+        facesOf[size_t(shortIndex[size_t(root)])].push_back(f);
     }
-    if (!any) return 0;
+    std::vector<size_t> byRoot(facesOf.size());  // the components in the order of their roots
+    std::iota(byRoot.begin(), byRoot.end(), size_t(0));
+    std::sort(byRoot.begin(), byRoot.end(), [&](size_t a, size_t b) { return shortRoot[a] < shortRoot[b]; });
     std::mt19937_64 rng(seed ^ 0x5bd1e9955bd1e995ULL);
     int added = 0;
-    for (size_t root = 0; root < facesOf.size(); ++root) {
-        const std::vector<int>& faces = facesOf[root];
-        if (faces.empty()) continue;
+    for (size_t c : byRoot) {
+        const std::vector<int>& faces = facesOf[c];
+        const size_t root = size_t(shortRoot[c]);
         std::vector<double> cumulative(faces.size());
         double total = 0;
         for (size_t k = 0; k < faces.size(); ++k) cumulative[k] = (total += faceArea(surface, faces[k]));
