@@ -13,6 +13,14 @@ namespace fieldcvt {
 
 namespace {
 
+// A uniform random point of face f: sqrt maps the first coordinate so the density is constant.
+Vec3 randomPointIn(const TriMesh& surface, int f, std::mt19937_64& rng)
+{
+    const double r1 = std::sqrt(unitInterval(rng())), r2 = unitInterval(rng());
+    const Face& t = surface.faces[f];
+    return (1 - r1) * surface.vertices[t[0]] + r1 * (1 - r2) * surface.vertices[t[1]] + r1 * r2 * surface.vertices[t[2]];
+}
+
 // `count` points, each in a face picked ∝ area × weight (weight 1 when `weight` is null).
 std::vector<Vec3> samplePoints(const TriMesh& surface, int count, std::uint64_t seed, const std::vector<double>* weight)
 {
@@ -31,11 +39,7 @@ std::vector<Vec3> samplePoints(const TriMesh& surface, int count, std::uint64_t 
         const double pick = unitInterval(rng()) * total;
         const int f = static_cast<int>(std::min<std::ptrdiff_t>(
             std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin(), surface.faceCount() - 1));
-        // Uniform point in a triangle: sqrt maps the first coordinate so density is constant.
-        const double r1 = std::sqrt(unitInterval(rng())), r2 = unitInterval(rng());
-        const Face& t = surface.faces[f];
-        points.push_back((1 - r1) * surface.vertices[t[0]] + r1 * (1 - r2) * surface.vertices[t[1]] +
-                         r1 * r2 * surface.vertices[t[2]]);
+        points.push_back(randomPointIn(surface, f, rng));
     }
     return points;
 }
@@ -103,10 +107,7 @@ int topUpSmallComponents(const TriMesh& surface, const std::function<int(const V
             const double pick = unitInterval(rng()) * total;
             const size_t k = std::min<size_t>(
                 size_t(std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin()), faces.size() - 1);
-            const double r1 = std::sqrt(unitInterval(rng())), r2 = unitInterval(rng());
-            const Face& t = surface.faces[faces[k]];
-            points.push_back((1 - r1) * surface.vertices[t[0]] + r1 * (1 - r2) * surface.vertices[t[1]] +
-                             r1 * r2 * surface.vertices[t[2]]);
+            points.push_back(randomPointIn(surface, faces[k], rng));
         }
     }
     return added;
