@@ -4,6 +4,7 @@
 #include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
+#include "texture_files.h"
 
 #include "errors.h"
 #include "mesh_check.h"
@@ -29,7 +30,8 @@ void printUsage()
         "(duplicate or unreferenced vertices, degenerate or duplicate faces, orientation,\n"
         "non-manifold vertices) is printed as a warning and written as it is: OUT holds IN's\n"
         "vertices and faces, in IN's order. A PLY IN's normals (nx ny nz) and field (rosy_x rosy_y\n"
-        "rosy_z) go to a PLY OUT.\n"
+        "rosy_z) go to a PLY OUT; IN's texture coordinates (OBJ vt, PLY texcoord) go to an OBJ or PLY\n"
+        "OUT with the materials' image names (an OBJ's .mtl copied when OUT is in another folder).\n"
         "\n"
         "Options:\n"
         "  --quiet       print nothing but errors\n"
@@ -53,7 +55,8 @@ int runConvert(const std::vector<std::string>& args)
 
     MeshReadInfo readInfo;
     VertexAttributes attributes;
-    const TriMesh input = readMesh(inPath, &readInfo, &attributes);
+    MeshTexture texture;
+    const TriMesh input = readMesh(inPath, &readInfo, &attributes, &texture);
     InputReport check;
     try {
         prepareInput(input, check);
@@ -64,11 +67,19 @@ int runConvert(const std::vector<std::string>& args)
                                                        attributes.rosy.size() == input.vertices.size());
     if (attributes.normals.size() != input.vertices.size()) attributes.normals.clear();
     if (attributes.rosy.size() != input.vertices.size()) attributes.rosy.clear();
-    writeMesh(outPath, input, keepAttributes ? &attributes : nullptr);
+    const bool keepTexture =
+        !texture.empty() && (isPlyPath(outPath) || isObjPath(outPath)) && textureProblem(input, texture).empty();
+    std::vector<std::string> textureWarnings;
+    if (keepTexture) {
+        lookUpMaterialImages(texture, inPath, textureWarnings);
+        placeTextureFiles(texture, inPath, outPath);
+    }
+    writeMesh(outPath, input, keepAttributes ? &attributes : nullptr, keepTexture ? &texture : nullptr);
 
     // What makes the mesh differ from the file is said even with --quiet.
     for (const std::string& warning : readInfo.warnings)
         std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
+    for (const std::string& warning : textureWarnings) std::fprintf(stderr, "fcvt: warning: %s\n", warning.c_str());
     if (!quiet) {
         for (const std::string& note : readInfo.notes)
             std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), note.c_str());

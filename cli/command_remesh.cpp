@@ -4,14 +4,13 @@
 #include "commands.h"
 #include "progress_printer.h"
 #include "report.h"
-#include "texture_files.h"
+#include "output_texture.h"
 
 #include "errors.h"
 #include "mesh_io.h"
 #include "metrics.h"
 #include "region.h"
 #include "remesh.h"
-#include "texture_transfer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -97,9 +96,14 @@ void printUsage()
         "  --report FILE.json    write a JSON report: counts, metrics, topology, stage times, energy\n"
         "                        history, field singularities (looked for only then), valence\n"
         "                        optimisation, repair, warnings\n"
-        "  --no-texture          drop the input's texture coordinates (by default an input with them,\n"
-        "                        OBJ vt or PLY texcoord, gives an output with them, in the input's\n"
-        "                        atlas, when OUT is .obj or .ply; the .mtl is copied if OUT is elsewhere)\n"
+        "  --texture MODE        the output's texture, when IN has texture coordinates (OBJ vt, PLY\n"
+        "                        texcoord) and OUT is .obj or .ply: keep (IN's atlas and images, each\n"
+        "                        face in one chart; the .mtl is copied if OUT is elsewhere), bake (a new\n"
+        "                        image OUT_texture.png, one triangle per face, sampled from IN's images),\n"
+        "                        auto (default: bake when keeping would put over 10 %% of the faces\n"
+        "                        across a seam of IN's atlas, i.e. its charts are small; keep when IN's\n"
+        "                        images cannot be read)\n"
+        "  --no-texture          drop the input's texture coordinates\n"
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise); without --report, d_RMS and d_H are then\n"
         "                        not computed (nothing would show them)\n"
@@ -307,33 +311,8 @@ std::vector<char> regionFromProperty(const std::string& path, const std::string&
     return selected;
 }
 
-std::string percentText(double share)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f %%", 100 * share);
-    return text;
-}
-
-//! The input's texture carried onto the output (empty when it has none or OUT cannot hold it),
-//! its material library and image references made to resolve from OUT's folder.
-TextureTransferResult outputTexture(const TriMesh& input, const MeshTexture& inputTexture, const RemeshResult& result,
-                                    const std::string& inPath, const std::string& outPath, std::vector<std::string>& warnings)
-{
-    if (inputTexture.empty()) return {};
-    if (!isPlyPath(outPath) && !isObjPath(outPath)) {
-        warnings.push_back(outPath + ": texture coordinates not written (only .obj and .ply hold them)");
-        return {};
-    }
-    TextureTransferParams params;
-    params.threads = result.threads;
-    TextureTransferResult texture = transferTexture(input, inputTexture, result.mesh, params);
-    lookUpMaterialImages(texture.texture, inPath, warnings);
-    placeTextureFiles(texture.texture, inPath, outPath);
-    return texture;
-}
-
 //! --region does not carry texture coordinates (yet): a warning when the input had some.
-TextureTransferResult noTextureWithRegion(const MeshTexture& inputTexture, std::vector<std::string>& warnings)
+OutputTexture noTextureWithRegion(const MeshTexture& inputTexture, std::vector<std::string>& warnings)
 {
     if (!inputTexture.empty()) warnings.push_back("texture coordinates are not carried with --region: the output has none");
     return {};
@@ -341,33 +320,13 @@ TextureTransferResult noTextureWithRegion(const MeshTexture& inputTexture, std::
 
 //! The run's information lines: the reader's, the core's, the texture's.
 std::vector<std::string> runNotes(const std::string& inPath, const MeshReadInfo& readInfo, const RemeshResult& result,
-                                  const TextureTransferResult& texture)
+                                  const OutputTexture& texture)
 {
     std::vector<std::string> notes;
     for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
     notes.insert(notes.end(), result.notes.begin(), result.notes.end());
-    if (!texture.texture.empty())
-        notes.push_back("texture kept in the input's atlas: " + std::to_string(texture.charts) + " charts, " +
-                        std::to_string(texture.continuedFaces) + " output faces (" + percentText(texture.continuedShare) +
-                        ") continued across a seam");
+    if (!texture.texture.empty()) notes.push_back(textureNote(texture));
     return notes;
-}
-
-//! The report's texture object; `input_has_texture` is null with --no-texture (not read then).
-nlohmann::ordered_json textureJson(const MeshTexture& input, bool dropped, const TextureTransferResult& texture, double seconds)
-{
-    nlohmann::ordered_json json = {
-        {"input_has_texture", dropped ? nlohmann::ordered_json() : nlohmann::ordered_json(!input.empty())},
-        {"no_texture_option", dropped},
-        {"kept", !texture.texture.empty()}};
-    if (texture.texture.empty()) return json;
-    json["mode"] = "keep_atlas";
-    json["charts"] = texture.charts;
-    json["materials"] = texture.texture.materials.size();
-    json["continued_faces"] = texture.continuedFaces;
-    json["continued_share"] = texture.continuedShare;
-    json["time_s"] = seconds;  // part of the write time: the transfer and the material files
-    return json;
 }
 
 }  // namespace
@@ -377,7 +336,7 @@ int runRemesh(const std::vector<std::string>& args)
     const Arguments a(
         args,
         {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations", "seed",
-         "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region"},
+         "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region", "texture"},
         {"quiet", "help", "no-valence", "no-repair", "keep-holes", "exact-count", "full-surface", "random-start", "no-texture"});
     if (a.flag("help")) {
         printUsage();
@@ -404,6 +363,7 @@ int runRemesh(const std::vector<std::string>& args)
             ".ply IN" +
             (isPlyPath(inPath) ? std::string() : " (" + inPath + " is not a .ply file)"));
     checkOutputPath(outPath, inPath);
+    const TextureMode textureMode = textureModeFromText(a.text("texture").value_or("auto"));
     if (const auto reportPath = a.text("report")) {
         checkDistinctOutputs(*reportPath, outPath, "output mesh");
         checkWritable(*reportPath, inPath);
@@ -448,9 +408,9 @@ int runRemesh(const std::vector<std::string>& args)
     const auto writeStart = std::chrono::steady_clock::now();
     const std::string regionProperty = region ? *region : std::string();
     std::vector<std::string> textureWarnings;
-    const TextureTransferResult texture = region ? noTextureWithRegion(inputTexture, textureWarnings)
-                                                 : outputTexture(input, inputTexture, result, inPath, outPath, textureWarnings);
-    const double textureSeconds = secondsSince(writeStart);
+    const OutputTexture texture = region ? noTextureWithRegion(inputTexture, textureWarnings)
+                                         : makeOutputTexture(input, inputTexture, result.mesh, result.threads, inPath, outPath,
+                                                             textureMode, textureWarnings);
     writeOutput(outPath, regionRun, regionProperty, inputAttributes, texture.texture.empty() ? nullptr : &texture.texture);
     const double writeSeconds = secondsSince(writeStart);
 
@@ -473,7 +433,7 @@ int runRemesh(const std::vector<std::string>& args)
         nlohmann::ordered_json report = remeshReport(
             inPath, outPath, params, targetLength, result, {readSeconds, writeSeconds, totalSeconds, meanEdge, outputTopology},
             warnings, notes, region ? regionJson(*region, regionRun) : nlohmann::ordered_json(nullptr));
-        report["texture"] = textureJson(inputTexture, a.flag("no-texture"), texture, textureSeconds);
+        report["texture"] = textureJson(inputTexture, a.flag("no-texture"), texture);
         writeJsonFile(*reportPath, report);
     }
 

@@ -11,5 +11,6 @@ int runMetrics(const std::vector<std::string>& args);
 int runField(const std::vector<std::string>& args);
 int runCompare(const std::vector<std::string>& args);
 int runConvert(const std::vector<std::string>& args);
+int runTextureCompare(const std::vector<std::string>& args);
 
 }  // namespace fieldcvt::cli

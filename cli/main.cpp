@@ -25,6 +25,7 @@ const char* const usage =
     "  compare IN --vertices N [options]      CVT vs FCVT on IN, one row per method (paper's Table 2)\n"
     "  metrics MESH [--ref INPUT] [--json]    quality metrics and topology of a mesh\n"
     "  convert IN OUT                         IN in OUT's format (by extension), after remesh's input checks\n"
+    "  texture-compare IN OUT [options]       how OUT's texture differs from IN's, rendered from the same cameras\n"
     "\n"
     "Options:\n"
     "  -h, --help     show this help; 'fcvt <command> --help' shows a command's options\n"
@@ -59,6 +60,7 @@ int run(const std::vector<std::string>& args)
     if (command == "field") return runField(rest);
     if (command == "compare") return runCompare(rest);
     if (command == "convert") return runConvert(rest);
+    if (command == "texture-compare") return runTextureCompare(rest);
     throw UsageError("unknown command '" + command + "' (try 'fcvt --help')");
 }
 

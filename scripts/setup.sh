@@ -10,7 +10,7 @@ packages=(
   build-essential cmake pkg-config dpkg-dev
   libeigen3-dev liblbfgspp-dev libnanoflann-dev libcgal-dev
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
-  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libstb-dev
   meshlab xvfb xauth python3 debootstrap zstd
   x11-apps x11-utils
   f3d optipng pngquant xdotool

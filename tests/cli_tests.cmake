@@ -144,14 +144,15 @@ add_test(NAME cli_region_sphere
 add_test(NAME cli_region_bunny
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_region.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/bunny.obj 3200
           ${FCVT_CLI_WORK}/region_bunny 0.15 20 0.9 85)
-# Issue 36: the texture kept in the input's atlas (resources/bunny10k_textured.obj: MeshLab's
-# sample, 190 charts) at 2000 vertices, written to another folder; and ../shared/textured/sub.obj
-# (one chart per triangle, when that folder is there) handled and its seam share reported.
-set(_fcvt_textured_shared "${PROJECT_SOURCE_DIR}/../shared/textured/sub.obj")
-if(NOT EXISTS "${_fcvt_textured_shared}")
-  set(_fcvt_textured_shared "")
-endif()
+# Issue 36: the texture kept in the input's atlas (resources/textured/bunny10k_textured.obj:
+# MeshLab's sample, 190 charts) at 2000 vertices, written to another folder; and sub.obj (one
+# chart per triangle) handled and its seam share reported.
 add_test(NAME cli_texture_bunny_2000
-  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_texture.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/bunny10k_textured.obj
-          190 2000 ${FCVT_CLI_WORK}/texture ${_fcvt_textured_shared})
-set_tests_properties(cli_texture_bunny_2000 PROPERTIES LABELS "cli" TIMEOUT 600)
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_texture.py $<TARGET_FILE:fcvt>
+          ${FCVT_RESOURCES}/textured/bunny10k_textured.obj 190 2000 ${FCVT_CLI_WORK}/texture ${FCVT_RESOURCES}/textured/sub.obj)
+# The default texture (auto: baked for these atlases of small charts) rendered beside the input's
+# (fcvt texture-compare): bunny10k_textured and sub.obj at 2000 and 5000 vertices.
+add_test(NAME cli_texture_render
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_texture_render.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/textured
+          ${FCVT_CLI_WORK}/texture_render)
+set_tests_properties(cli_texture_bunny_2000 cli_texture_render PROPERTIES LABELS "cli" TIMEOUT 600)

@@ -1,8 +1,9 @@
-"""fcvt remesh keeps the input's texture atlas (issue 36): per-corner texture coordinates on the
+"""fcvt remesh --texture keep keeps the input's texture atlas (issue 36): per-corner texture coordinates on the
 output OBJ (one finite vt per corner, `f v/vt`), no face stretched across the atlas, the copied
 material library and its image resolving from the output's folder, the chart count and the share
 of seam-crossing faces in the report, MeshLab's PLY texcoord / TextureFile, --no-texture; and an
-atlas of one chart per triangle (sub.obj, when given) handled and reported.
+atlas of one chart per triangle (sub.obj, when given) handled and reported. The default
+(--texture auto) and the baked texture: check_texture_render.py.
 Usage: check_texture.py FCVT TEXTURED_OBJ CHARTS VERTICES WORK_DIR [ONE_CHART_PER_FACE_OBJ]"""
 import json
 import math
@@ -51,7 +52,8 @@ def stretch(v, vt, face):
 
 def remesh(inp, out, *extra):
     report = out + ".json"
-    code, _, err = run([fcvt, "remesh", inp, out, "--vertices", vertices, "--seed", "1", "--report", report, *extra])
+    code, _, err = run([fcvt, "remesh", inp, out, "--vertices", vertices, "--seed", "1", "--report", report, "--texture", "keep",
+                        *extra])
     check(code == 0, f"remesh {os.path.basename(inp)} -> {os.path.basename(out)} exit {code}: {err.strip()[-400:]}")
     return json.load(open(report)) if code == 0 else {}, err
 
@@ -142,7 +144,7 @@ share = tex.get("continued_share", -1)
 check(0 <= share < 0.5, f"seam-crossing share {share}")
 print(f"{os.path.basename(textured)} at {vertices} vertices: {tex.get('charts')} charts, "
       f"{100 * share:.2f} % of output faces continued across a seam")
-check("continued across a seam" in err, "the seam figure is printed")
+check("across a seam, continued there" in err, "the seam figure is printed")
 # The material library was copied next to the output, and its image resolves from there.
 check(len(olibs) == len(ilibs) and all(os.path.isfile(os.path.join(out_dir, lib)) for lib in olibs), f"mtllib {olibs}")
 images = []
