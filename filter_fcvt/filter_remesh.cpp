@@ -14,6 +14,7 @@
 #include "errors.h"
 #include "filter_parameters.h"
 #include "layer_data.h"
+#include "layer_texture.h"
 #include "mesh_convert.h"
 #include "progress.h"
 
@@ -270,6 +271,13 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
                                            : keep.colour               ? "colour"
                                                                        : "quality")
                                       .arg(input->label()));
+        // The selection's kept faces keep their own coordinates only when the whole layer was remeshed.
+        if (!inputs.selectedOnly || region.wholeMesh) {
+            const QString textureLine = transferLayerTexture(*input, result.mesh, result.threads, *output);
+            if (!textureLine.isEmpty()) outputLines.push_back(textureLine);
+        } else if (input->hasDataMask(MeshModel::MM_WEDGTEXCOORD)) {
+            outputLines.push_back("FCVT: texture coordinates are not carried when remeshing a selection: the new layer has none");
+        }
         if (inputs.colorIrregular)
             outputLines.push_back("FCVT valence colours on '" + output->label() +
                                   "': " + applyValenceColours(result.mesh, *output));

@@ -46,7 +46,10 @@ if(TARGET fcvt)
   add_test(NAME meshlab_log_order
     COMMAND bash "${_fcvt_ml_dir}/log_order.sh" "${PROJECT_SOURCE_DIR}"
             "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/log_order" "$<TARGET_FILE:fcvt>")
-  set_tests_properties(meshlab_filter_equals_cli meshlab_log_order PROPERTIES LABELS meshlab TIMEOUT 600)
+  add_test(NAME meshlab_texture_transfer
+    COMMAND bash "${_fcvt_ml_dir}/texture_transfer.sh" "${PROJECT_SOURCE_DIR}"
+            "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/texture_transfer" "$<TARGET_FILE:fcvt>")
+  set_tests_properties(meshlab_filter_equals_cli meshlab_log_order meshlab_texture_transfer PROPERTIES LABELS meshlab TIMEOUT 600)
 endif()
 add_test(NAME meshlab_far_coordinates
   COMMAND bash "${_fcvt_ml_dir}/far_coordinates.sh" "${PROJECT_SOURCE_DIR}"

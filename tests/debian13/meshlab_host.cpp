@@ -182,6 +182,8 @@ void save(PluginManager& pm, MeshDocument& md, const Output& out)
     const RichParameterList params = io->initSaveParameter(ext, *m);
     try {
         io->save(ext, out.file, *m, out.mask & capability, params, nullptr);
+        // The images too, as MeshLab's File > Export Mesh does: a baked texture lives only in the layer.
+        if (out.mask & capability & vcg::tri::io::Mask::IOM_WEDGTEXCOORD) m->saveTextures(QFileInfo(out.file).absolutePath());
     } catch (const MLException& e) {
         die(QString("Output mesh %1 has NOT been saved: %2").arg(out.file, e.what()));
     }

@@ -1,0 +1,135 @@
+#include "layer_texture.h"
+
+#include "mesh_convert.h"
+
+#include "texture_bake.h"
+#include "texture_transfer.h"
+
+#include <QImage>
+
+#include <cmath>
+
+namespace fcvt_plugin {
+
+fieldcvt::MeshTexture layerTexture(const MeshModel& layer, const fieldcvt::TriMesh& layerMesh, QString* problem)
+{
+    fieldcvt::MeshTexture texture;
+    if (!layer.hasDataMask(MeshModel::MM_WEDGTEXCOORD)) return texture;
+    for (const std::string& name : layer.cm.textures) texture.materials.push_back({name, name});
+    if (texture.materials.empty()) texture.materials.push_back({"", ""});  // coordinates without an image
+    texture.uv.reserve(3 * layerMesh.faces.size());
+    for (const CFaceO& f : layer.cm.face) {
+        if (f.IsD()) continue;
+        for (int k = 0; k < 3; ++k) texture.uv.emplace_back(double(f.cWT(k).U()), double(f.cWT(k).V()));
+        const int index = f.cWT(0).N();
+        texture.faceMaterial.push_back(index >= 0 && index < int(texture.materials.size()) ? index : -1);
+    }
+    const std::string why = fieldcvt::textureProblem(layerMesh, texture);
+    if (!why.empty()) {
+        if (problem) *problem = QString::fromStdString(why);
+        return {};
+    }
+    return texture;
+}
+
+namespace {
+
+#if FCVT_MESHLAB_API == 2022
+fieldcvt::TextureImage toTextureImage(const QImage& image)
+{
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB888);
+    fieldcvt::TextureImage t;
+    t.width = rgb.width();
+    t.height = rgb.height();
+    t.rgb.resize(3 * size_t(t.width) * size_t(t.height));
+    for (int y = 0; y < t.height; ++y)
+        std::copy(rgb.constScanLine(y), rgb.constScanLine(y) + 3 * t.width, t.rgb.begin() + 3 * size_t(y) * t.width);
+    return t;
+}
+
+QImage toQImage(const fieldcvt::TextureImage& t)
+{
+    QImage image(t.width, t.height, QImage::Format_RGB888);
+    for (int y = 0; y < t.height; ++y)
+        std::copy(t.rgb.begin() + 3 * size_t(y) * t.width, t.rgb.begin() + 3 * size_t(y + 1) * t.width, image.scanLine(y));
+    return image;
+}
+
+//! The input layer's images, one per texture; empty when one is missing (MeshLab's dummy).
+std::vector<fieldcvt::TextureImage> layerImages(const MeshModel& input)
+{
+    std::vector<fieldcvt::TextureImage> images;
+    for (const std::string& name : input.cm.textures) {
+        const QImage image = input.getTexture(name);
+        // MeshLab names a texture it could not load "dummy.png" and shows its placeholder image.
+        if (image.isNull() || name == "dummy.png") return {};
+        images.push_back(toTextureImage(image));
+    }
+    return images;
+}
+#endif
+
+void writeWedges(const fieldcvt::MeshTexture& texture, MeshModel& output)
+{
+    output.updateDataMask(MeshModel::MM_WEDGTEXCOORD);
+    size_t f = 0;
+    for (CFaceO& face : output.cm.face) {
+        if (face.IsD()) continue;
+        for (int k = 0; k < 3; ++k) {
+            const fieldcvt::Vec2& uv = texture.uv[3 * f + k];
+            face.WT(k).U() = Scalarm(uv.x());
+            face.WT(k).V() = Scalarm(uv.y());
+            face.WT(k).N() = short(texture.faceMaterial[f]);
+        }
+        ++f;
+    }
+}
+
+}  // namespace
+
+QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& outputMesh, int threads, MeshModel& output)
+{
+    const fieldcvt::TriMesh layerMesh = toTriMesh(input.cm);
+    QString problem;
+    const fieldcvt::MeshTexture texture = layerTexture(input, layerMesh, &problem);
+    if (texture.empty())
+        return problem.isEmpty() ? QString() : "FCVT: texture coordinates of '" + input.label() + "' dropped: " + problem;
+    if (size_t(output.cm.fn) != outputMesh.faces.size()) return "FCVT: texture coordinates not carried (face count changed)";
+    fieldcvt::TextureTransferParams transferParams;
+    transferParams.threads = threads;
+    const fieldcvt::TextureTransferResult kept = fieldcvt::transferTexture(layerMesh, texture, outputMesh, transferParams);
+    const QString seams = QString("%1 charts, %2 output faces (%3 %) across a seam")
+                              .arg(kept.charts)
+                              .arg(kept.continuedFaces)
+                              .arg(100.0 * kept.continuedShare, 0, 'f', 2);
+#if FCVT_MESHLAB_API == 2022
+    if (kept.continuedShare > fieldcvt::kBakeAboveContinuedShare) {
+        const std::vector<fieldcvt::TextureImage> images = layerImages(input);
+        if (!images.empty() && images.size() == texture.materials.size()) {
+            fieldcvt::TextureBakeParams bakeParams;
+            bakeParams.threads = threads;
+            const fieldcvt::TextureBakeResult baked = fieldcvt::bakeTexture(layerMesh, texture, images, outputMesh, bakeParams);
+            writeWedges(baked.texture, output);
+            const std::string name = output.label().toStdString() + "_texture.png";
+            output.clearTextures();
+            output.addTexture(name, toQImage(baked.image));
+            return QString(
+                       "FCVT: texture baked into '%1' (%2 x %3, one triangle per face): keeping the input's atlas (%4) "
+                       "would stretch them")
+                .arg(QString::fromStdString(name))
+                .arg(baked.image.width)
+                .arg(baked.image.height)
+                .arg(seams);
+        }
+    }
+    writeWedges(kept.texture, output);
+    output.clearTextures();
+    for (const std::string& name : input.cm.textures) output.addTexture(name, input.getTexture(name));
+#else
+    writeWedges(kept.texture, output);
+    output.cm.textures = input.cm.textures;  // MeshLab 2020.09 loads the images by name when it draws
+#endif
+    return "FCVT: texture kept in the input's atlas: " + seams + ", continued there";
+}
+
+}  // namespace fcvt_plugin

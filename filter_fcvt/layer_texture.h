@@ -1,0 +1,24 @@
+#pragma once
+// The input layer's texture carried to the remeshed layer (issue 36): MeshLab's wedge texture
+// coordinates (per face corner, with the texture index) and the layer's textures.
+#include <QString>
+
+#include "meshlab_types.h"
+#include "mesh.h"
+#include "mesh_texture.h"
+
+namespace fcvt_plugin {
+
+//! The layer's live faces with their wedge texture coordinates (face i = the i-th live face, its
+//! material the first corner's texture index, materials named after cm.textures); an empty
+//! texture when the layer has none or they do not fit (NaN, an index out of range).
+fieldcvt::MeshTexture layerTexture(const MeshModel& layer, const fieldcvt::TriMesh& layerMesh, QString* problem);
+
+//! Gives `output` (whose i-th face is `outputMesh`'s face i) wedge texture coordinates from
+//! `input`'s and `input`'s textures, as the CLI does: the input's atlas kept, or (MeshLab
+//! 2022.02 and later, which hold the layer's images) a new image baked when keeping would put
+//! more than fieldcvt::kBakeAboveContinuedShare of the faces across a seam. Returns the log line
+//! (empty when the input has no texture coordinates).
+QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& outputMesh, int threads, MeshModel& output);
+
+}  // namespace fcvt_plugin
