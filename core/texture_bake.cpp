@@ -2,14 +2,11 @@
 #include "texture_bake.h"
 
 #include "closest_point.h"
+#include "thread_budget.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace fieldcvt {
 
@@ -98,11 +95,7 @@ TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputText
     if (output.faces.empty()) return result;
 
     const ClosestPointTree tree(input);
-#ifdef _OPENMP
-    const int threads = params.threads > 0 ? params.threads : omp_get_max_threads();
-#else
-    const int threads = 1;
-#endif
+    const int threads = openMpThreads(params.threads);
     const long long cells = (static_cast<long long>(output.faces.size()) + 1) / 2;
     // Each cell writes only its own texels: the same image on any thread count.
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 16) if (threads > 1)

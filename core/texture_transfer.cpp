@@ -3,15 +3,12 @@
 #include "texture_transfer.h"
 
 #include "closest_point.h"
+#include "thread_budget.h"
 #include "disjoint_sets.h"
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace fieldcvt {
 
@@ -116,11 +113,7 @@ TextureTransferResult transferTexture(const TriMesh& input, const MeshTexture& i
     TextureTransferResult result;
     const std::vector<int> chart = textureCharts(input, inputTexture, params.uvTolerance, &result.charts);
     const ClosestPointTree tree(input);
-#ifdef _OPENMP
-    const int threads = params.threads > 0 ? params.threads : omp_get_max_threads();
-#else
-    const int threads = 1;
-#endif
+    const int threads = openMpThreads(params.threads);
     // Each query is independent and written to its own slot: the same result on any thread count.
     std::vector<ClosestPoint> atVertex(output.vertices.size());
     std::vector<int> centroidFace(output.faces.size());

@@ -1,5 +1,9 @@
 #include "thread_budget.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -58,6 +62,16 @@ int threadsForThisMachine(int requested)
     return threadsForLoad(requested, cores, fewest);
 #else
     return threadsForLoad(requested, cores, -1);
+#endif
+}
+
+int openMpThreads(int requested)
+{
+#ifdef _OPENMP
+    return requested > 0 ? requested : omp_get_max_threads();
+#else
+    (void)requested;
+    return 1;
 #endif
 }
 

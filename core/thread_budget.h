@@ -23,4 +23,8 @@ int threadsForLoad(int requested, int cores, int others);
 //! one, or a short job, is often runnable at the first look; a competing busy task at every one).
 int threadsForThisMachine(int requested);
 
+//! A parameter's thread count for an OpenMP loop: `requested` (> 0) as it is, else OpenMP's
+//! default (1 without OpenMP).
+int openMpThreads(int requested);
+
 }  // namespace fieldcvt
