@@ -5,6 +5,7 @@
 #include "texture_bake.h"
 #include "texture_transfer.h"
 
+#include <QFileInfo>
 #include <QImage>
 
 #include <cmath>
@@ -34,7 +35,6 @@ fieldcvt::MeshTexture layerTexture(const MeshModel& layer, const fieldcvt::TriMe
 
 namespace {
 
-#if FCVT_MESHLAB_API == 2022
 fieldcvt::TextureImage toTextureImage(const QImage& image)
 {
     const QImage rgb = image.convertToFormat(QImage::Format_RGB888);
@@ -55,19 +55,44 @@ QImage toQImage(const fieldcvt::TextureImage& t)
     return image;
 }
 
-//! The input layer's images, one per texture; empty when one is missing (MeshLab's dummy).
+//! The input layer's images, one per texture; empty when one cannot be had. MeshLab 2022.02 and
+//! later hold them in the layer (a texture it could not load is named "dummy.png" and shows a
+//! placeholder); 2020.09 holds only names, read here as MeshLab does: relative to the layer's file.
 std::vector<fieldcvt::TextureImage> layerImages(const MeshModel& input)
 {
     std::vector<fieldcvt::TextureImage> images;
     for (const std::string& name : input.cm.textures) {
+#if FCVT_MESHLAB_API == 2022
         const QImage image = input.getTexture(name);
-        // MeshLab names a texture it could not load "dummy.png" and shows its placeholder image.
-        if (image.isNull() || name == "dummy.png") return {};
+        if (name == "dummy.png") return {};
+#else
+        const QString file = QString::fromStdString(name);
+        const QImage image(QFileInfo(file).isAbsolute() ? file : input.pathName() + "/" + file);
+#endif
+        if (image.isNull()) return {};
         images.push_back(toTextureImage(image));
     }
     return images;
 }
+
+//! Gives `output` the baked image under `name`: in the layer (2022.02 and later; File > Export
+//! Mesh saves it beside the mesh) or, in 2020.09, whose layers hold only names, as a PNG beside
+//! the input's file (as MeshLab's own texture filters write theirs). An error text, or empty.
+QString storeBakedImage(const MeshModel& input, const QImage& image, const std::string& name, MeshModel& output)
+{
+#if FCVT_MESHLAB_API == 2022
+    (void)input;
+    output.clearTextures();
+    output.addTexture(name, image);
+    return {};
+#else
+    if (input.fullName().isEmpty()) return "the input layer has no file to write the image beside";
+    const QString path = input.pathName() + "/" + QString::fromStdString(name);
+    if (!image.save(path, "PNG")) return "cannot write " + path;
+    output.cm.textures = {name};
+    return {};
 #endif
+}
 
 void writeWedges(const fieldcvt::MeshTexture& texture, MeshModel& output)
 {
@@ -102,33 +127,38 @@ QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& ou
                               .arg(kept.charts)
                               .arg(kept.continuedFaces)
                               .arg(100.0 * kept.continuedShare, 0, 'f', 2);
-#if FCVT_MESHLAB_API == 2022
+    QString bakeProblem;
     if (kept.continuedShare > fieldcvt::kBakeAboveContinuedShare) {
         const std::vector<fieldcvt::TextureImage> images = layerImages(input);
         if (!images.empty() && images.size() == texture.materials.size()) {
             fieldcvt::TextureBakeParams bakeParams;
             bakeParams.threads = threads;
             const fieldcvt::TextureBakeResult baked = fieldcvt::bakeTexture(layerMesh, texture, images, outputMesh, bakeParams);
-            writeWedges(baked.texture, output);
             const std::string name = output.label().toStdString() + "_texture.png";
-            output.clearTextures();
-            output.addTexture(name, toQImage(baked.image));
-            return QString(
-                       "FCVT: texture baked into '%1' (%2 x %3, one triangle per face): keeping the input's atlas (%4) "
-                       "would stretch them")
-                .arg(QString::fromStdString(name))
-                .arg(baked.image.width)
-                .arg(baked.image.height)
-                .arg(seams);
+            bakeProblem = storeBakedImage(input, toQImage(baked.image), name, output);
+            if (bakeProblem.isEmpty()) {
+                writeWedges(baked.texture, output);
+                return QString(
+                           "FCVT: texture baked into '%1' (%2 x %3, one triangle per face): keeping the input's atlas (%4) "
+                           "would stretch them")
+                    .arg(QString::fromStdString(name))
+                    .arg(baked.image.width)
+                    .arg(baked.image.height)
+                    .arg(seams);
+            }
+        } else {
+            bakeProblem = "the input's texture images cannot be read";
         }
     }
     writeWedges(kept.texture, output);
+#if FCVT_MESHLAB_API == 2022
     output.clearTextures();
     for (const std::string& name : input.cm.textures) output.addTexture(name, input.getTexture(name));
 #else
-    writeWedges(kept.texture, output);
     output.cm.textures = input.cm.textures;  // MeshLab 2020.09 loads the images by name when it draws
 #endif
+    if (!bakeProblem.isEmpty())
+        return "FCVT: texture kept in the input's atlas (" + seams + ", continued there): no texture baked: " + bakeProblem;
     return "FCVT: texture kept in the input's atlas: " + seams + ", continued there";
 }
 

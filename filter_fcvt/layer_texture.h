@@ -15,9 +15,10 @@ namespace fcvt_plugin {
 fieldcvt::MeshTexture layerTexture(const MeshModel& layer, const fieldcvt::TriMesh& layerMesh, QString* problem);
 
 //! Gives `output` (whose i-th face is `outputMesh`'s face i) wedge texture coordinates from
-//! `input`'s and `input`'s textures, as the CLI does: the input's atlas kept, or (MeshLab
-//! 2022.02 and later, which hold the layer's images) a new image baked when keeping would put
-//! more than fieldcvt::kBakeAboveContinuedShare of the faces across a seam. Returns the log line
+//! `input`'s and `input`'s textures, as the CLI does: the input's atlas kept, or a new image
+//! baked when keeping would put more than fieldcvt::kBakeAboveContinuedShare of the faces across
+//! a seam, named "<layer>_texture.png" (held in the layer on MeshLab 2022.02 and later; on
+//! 2020.09, whose layers hold names only, a file beside the input's). Returns the log line
 //! (empty when the input has no texture coordinates).
 QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& outputMesh, int threads, MeshModel& output);
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Keep the texture (issue 36 item 2), through meshlabserver: bunny10k_textured (190 charts of a
 # labelled pattern) as a PLY with MeshLab's texcoord face lists and its TextureFile, remeshed to
-# 5000 vertices; the new layer, saved with its wedge texture coordinates (-m wt), must render
-# like the input (fcvt texture-compare: at most 2.5 times the half-pixel yardstick; the CLI's
-# own bars are in tests/cli/check_texture_render.py) and log how its texture was made: the
-# input's atlas kept (MeshLab 2020.09, which holds no images in the layer) or a new image baked
-# (MeshLab 2022.02 and later, from the layer's images, as the CLI's default does here).
+# 5000 vertices; as the CLI's default does here, the filter bakes a new image (keeping the
+# atlas would put 19 % of the faces across a seam): in the layer on MeshLab 2022.02 and later
+# (the test host saves it beside the mesh), as a file beside the input on 2020.09. The new layer,
+# saved with its wedge texture coordinates (-m wt), must name it and render like the input
+# (fcvt texture-compare: at most 2 times the half-pixel yardstick, the issue's goal).
 # Usage: texture_transfer.sh SOURCE_DIR PLUGIN_SO WORK_DIR FCVT_CLI
 set -euo pipefail
 FCVT_SOURCE_DIR="$1"; plugin="$2"; work="$3"; cli="$4"
@@ -22,14 +22,10 @@ out="$work/out/bunny-fcvt.ply"
 run_meshlabserver "$server" "$work/out/log.txt" -i "$work/out/bunny.ply" -o "$out" -m wt -s "$work/out/remesh.mlx"
 [ "$MLS_RC" -eq 0 ] || fail "meshlabserver exited with $MLS_RC"
 grep -q "FCVT: new layer" "$work/out/log.txt" || fail "filter not run"
-if grep -q "FCVT: texture baked into 'bunny_FCVT_texture.png'" "$work/out/log.txt"; then
-  [ -s "$work/out/bunny_FCVT_texture.png" ] || fail "the baked image was not saved"
-  grep -aq "^comment TextureFile bunny_FCVT_texture.png" "$out" || fail "the output names no baked texture"
-else
-  grep -Eq "FCVT: texture kept in the input's atlas: 190 charts, [0-9]+ output faces \([0-9.]+ %\) across a seam" \
-    "$work/out/log.txt" || fail "no texture line in the log"
-  grep -aq "^comment TextureFile TextureDouble_A.png" "$out" || fail "the output names no texture"
-fi
+grep -Eq "FCVT: texture baked into 'bunny_FCVT_texture.png' \([0-9]+ x [0-9]+, one triangle per face\): keeping the input's atlas \(190 charts, [0-9]+ output faces \([0-9.]+ %\) across a seam\) would stretch them" \
+  "$work/out/log.txt" || fail "no bake in the log"
+[ -s "$work/out/bunny_FCVT_texture.png" ] || fail "the baked image was not saved"
+grep -aq "^comment TextureFile bunny_FCVT_texture.png" "$out" || fail "the output names no baked texture"
 grep -aq "^property list uchar float texcoord" "$out" || fail "the output has no texture coordinates"
 "$cli" texture-compare "$work/out/bunny.ply" "$out" --json > "$work/out/compare.json"
 python3 - "$work/out/compare.json" <<'PY' || fail "the new layer's texture differs from the input's"
@@ -37,6 +33,6 @@ import json, sys
 r = json.load(open(sys.argv[1]))
 print(f"difference {r['difference']:.3f}, half-pixel yardstick {r['half_pixel']:.3f}, ratio {r['ratio']:.2f}, "
       f"seam faces {100 * r['seam_faces']:.1f} %")
-sys.exit(0 if r["ratio"] <= 2.5 else 1)
+sys.exit(0 if r["ratio"] <= 2.0 else 1)
 PY
 echo "PASS"
