@@ -311,21 +311,14 @@ std::vector<char> regionFromProperty(const std::string& path, const std::string&
     return selected;
 }
 
-//! --region does not carry texture coordinates (yet): a warning when the input had some.
-OutputTexture noTextureWithRegion(const MeshTexture& inputTexture, std::vector<std::string>& warnings)
-{
-    if (!inputTexture.empty()) warnings.push_back("texture coordinates are not carried with --region: the output has none");
-    return {};
-}
-
 //! The run's information lines: the reader's, the core's, the texture's.
 std::vector<std::string> runNotes(const std::string& inPath, const MeshReadInfo& readInfo, const RemeshResult& result,
-                                  const OutputTexture& texture)
+                                  const WrittenTexture& texture)
 {
     std::vector<std::string> notes;
     for (const std::string& note : readInfo.notes) notes.push_back(inPath + ": " + note);
     notes.insert(notes.end(), result.notes.begin(), result.notes.end());
-    if (!texture.texture.empty()) notes.push_back(textureNote(texture));
+    if (!texture.made.texture.empty()) notes.push_back(textureNote(texture));
     return notes;
 }
 
@@ -408,10 +401,12 @@ int runRemesh(const std::vector<std::string>& args)
     const auto writeStart = std::chrono::steady_clock::now();
     const std::string regionProperty = region ? *region : std::string();
     std::vector<std::string> textureWarnings;
-    const OutputTexture texture = region ? noTextureWithRegion(inputTexture, textureWarnings)
-                                         : makeOutputTexture(input, inputTexture, result.mesh, result.threads, inPath, outPath,
-                                                             textureMode, textureWarnings);
-    writeOutput(outPath, regionRun, regionProperty, inputAttributes, texture.texture.empty() ? nullptr : &texture.texture);
+    // After a selection-only run the kept faces keep their own coordinates (faceOrigin).
+    const std::vector<int> faceOrigin = region && !regionRun.wholeMesh ? regionRun.faceOrigin : std::vector<int>{};
+    const WrittenTexture texture = writeOutputTexture(input, inputTexture, result.mesh, faceOrigin, result.threads, inPath,
+                                                      outPath, textureMode, textureWarnings);
+    writeOutput(outPath, regionRun, regionProperty, inputAttributes,
+                texture.made.texture.empty() ? nullptr : &texture.made.texture);
     const double writeSeconds = secondsSince(writeStart);
 
     // Warnings say that the output differs from what was asked (topology, parts, faces, vertex

@@ -8,8 +8,6 @@
 
 #include "errors.h"
 #include "image_io.h"
-#include "texture_bake.h"
-#include "texture_transfer.h"
 
 #include <chrono>
 #include <cstdio>
@@ -36,20 +34,21 @@ std::string percentText(double share)
     return text;
 }
 
-//! The input's images, one per material; empty with a warning when one cannot be read.
-std::vector<TextureImage> inputImages(const MeshTexture& texture, const std::string& inPath, std::vector<std::string>& warnings)
+//! The input's images, one per material; empty when one cannot be read (a warning then: only
+//! if a bake is wanted does it matter, and makeOutputTexture says so).
+std::vector<TextureImage> inputImages(const MeshTexture& texture, const std::string& inPath, std::vector<std::string>& problems)
 {
     std::vector<TextureImage> images;
     const fs::path folder = fs::path(inPath).parent_path();
     for (const TextureMaterial& m : texture.materials) {
         if (m.image.empty()) {
-            warnings.push_back(inPath + ": material '" + m.name + "' names no image: no texture to bake, the atlas is kept");
+            problems.push_back(inPath + ": material '" + m.name + "' names no image");
             return {};
         }
         try {
             images.push_back(readImage((folder / m.image).string()));
         } catch (const Error& e) {
-            warnings.push_back(std::string(e.what()) + ": no texture to bake, the atlas is kept");
+            problems.push_back(e.what());
             return {};
         }
     }
@@ -65,83 +64,81 @@ fs::path bakedImagePath(const std::string& outPath)
 
 }  // namespace
 
-OutputTexture makeOutputTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output, int threads,
-                                const std::string& inPath, const std::string& outPath, TextureMode mode,
-                                std::vector<std::string>& warnings)
+WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
+                                  const std::vector<int>& faceOrigin, int threads, const std::string& inPath,
+                                  const std::string& outPath, TextureMode mode, std::vector<std::string>& warnings)
 {
-    OutputTexture result;
+    WrittenTexture result;
     if (inputTexture.empty()) return result;
     if (!isPlyPath(outPath) && !isObjPath(outPath)) {
         warnings.push_back(outPath + ": texture coordinates not written (only .obj and .ply hold them)");
         return result;
     }
     const auto start = std::chrono::steady_clock::now();
-    TextureTransferParams transferParams;
-    transferParams.threads = threads;
     MeshTexture withImages = inputTexture;  // the materials' images looked up in the .mtl files
     lookUpMaterialImages(withImages, inPath, warnings);
-    TextureTransferResult kept = transferTexture(input, withImages, output, transferParams);
-    result.charts = kept.charts;
-    result.continuedFaces = kept.continuedFaces;
-    result.continuedShare = kept.continuedShare;
-
-    const bool bake = mode == TextureMode::Bake || (mode == TextureMode::Auto && kept.continuedShare > kBakeAboveContinuedShare);
-    std::vector<TextureImage> images;
-    if (bake) images = inputImages(withImages, inPath, warnings);
-    if (bake && !images.empty()) {
-        TextureBakeParams bakeParams;
-        bakeParams.threads = threads;
-        TextureBakeResult baked = bakeTexture(input, withImages, images, output, bakeParams);
+    OutputTextureParams params;
+    params.method = mode == TextureMode::Keep   ? TextureMethod::Keep
+                    : mode == TextureMode::Bake ? TextureMethod::Bake
+                                                : TextureMethod::Auto;
+    params.threads = threads;
+    // Keeping the atlas never needs the images; a bake without them keeps it, with a warning.
+    std::vector<std::string> imageProblems;
+    const std::vector<TextureImage> images =
+        mode == TextureMode::Keep ? std::vector<TextureImage>{} : inputImages(withImages, inPath, imageProblems);
+    result.made = makeOutputTexture(input, withImages, images, output, faceOrigin, params);
+    if (result.made.bakeImpossible)
+        for (const std::string& problem : imageProblems) warnings.push_back(problem + ": no texture to bake, the atlas is kept");
+    MeshTexture& texture = result.made.texture;
+    if (result.made.baked) {
         const fs::path imagePath = bakedImagePath(outPath);
-        writePng(imagePath.string(), baked.image);
-        baked.texture.materials[0].image = imagePath.filename().string();
-        result.texture = std::move(baked.texture);
-        result.method = "bake";
+        writePng(imagePath.string(), result.made.bakedImage);
+        result.made.bakedImage = {};  // written: its memory back
         result.bakedImage = imagePath.string();
-        result.bakedWidth = baked.image.width;
-        result.bakedHeight = baked.image.height;
-        result.cellSize = baked.cellSize;
-        placeTextureFiles(result.texture, outPath, outPath);  // the image is already beside OUT: an .mtl for an OBJ
+        // One material file for all, written beside OUT: the baked image there, the input's
+        // (the kept faces of a selection) as seen from there.
+        for (int m = 0; m < result.made.bakedMaterial; ++m)
+            texture.materials[m].image = rebaseImage(texture.materials[m].image, inPath, outPath);
+        texture.materials[result.made.bakedMaterial].image = imagePath.filename().string();
+        texture.libraries.clear();
+        placeTextureFiles(texture, outPath, outPath);
     } else {
-        result.texture = std::move(kept.texture);
-        result.method = "keep_atlas";
-        placeTextureFiles(result.texture, inPath, outPath);
+        placeTextureFiles(texture, inPath, outPath);
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 
-std::string textureNote(const OutputTexture& texture)
+std::string textureNote(const WrittenTexture& written)
 {
+    const fieldcvt::OutputTexture& texture = written.made;
     if (texture.texture.empty()) return {};
     const std::string keep = std::to_string(texture.charts) + " charts, " + std::to_string(texture.continuedFaces) +
                              " output faces (" + percentText(texture.continuedShare) + ") across a seam";
-    if (texture.method == "bake")
-        return "texture baked into " + texture.bakedImage + " (" + std::to_string(texture.bakedWidth) + " x " +
-               std::to_string(texture.bakedHeight) + ", one triangle per face): keeping the input's atlas (" + keep +
-               ") would stretch them";
+    if (texture.baked)
+        return "texture baked into " + written.bakedImage + " (" + std::to_string(texture.cellSize) +
+               " texels a cell, one triangle per face): keeping the input's atlas (" + keep + ") would stretch them";
     return "texture kept in the input's atlas: " + keep + ", continued there";
 }
 
-nlohmann::ordered_json textureJson(const MeshTexture& input, bool dropped, const OutputTexture& texture)
+nlohmann::ordered_json textureJson(const MeshTexture& input, bool dropped, const WrittenTexture& written)
 {
+    const fieldcvt::OutputTexture& texture = written.made;
     nlohmann::ordered_json json = {
         {"input_has_texture", dropped ? nlohmann::ordered_json() : nlohmann::ordered_json(!input.empty())},
         {"no_texture_option", dropped},
         {"kept", !texture.texture.empty()}};
     if (texture.texture.empty()) return json;
-    json["mode"] = texture.method;
+    json["mode"] = texture.baked ? "bake" : "keep_atlas";
     json["charts"] = texture.charts;
     json["materials"] = texture.texture.materials.size();
     json["continued_faces"] = texture.continuedFaces;
     json["continued_share"] = texture.continuedShare;
-    if (texture.method == "bake") {
-        json["baked_image"] = texture.bakedImage;
-        json["baked_width"] = texture.bakedWidth;
-        json["baked_height"] = texture.bakedHeight;
+    if (texture.baked) {
+        json["baked_image"] = written.bakedImage;
         json["cell_texels"] = texture.cellSize;
     }
-    json["time_s"] = texture.seconds;  // part of the write time: the transfer or bake and the texture files
+    json["time_s"] = written.seconds;
     return json;
 }
 

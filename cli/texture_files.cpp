@@ -104,6 +104,11 @@ void lookUpMaterialImages(MeshTexture& texture, const std::string& inPath, std::
             warnings.push_back(inPath + ": texture image " + m.image + " not found (the texture coordinates are kept)");
 }
 
+std::string rebaseImage(const std::string& image, const std::string& inPath, const std::string& outPath)
+{
+    return rebase(image, folderOf(inPath), folderOf(outPath));
+}
+
 void placeTextureFiles(MeshTexture& texture, const std::string& inPath, const std::string& outPath)
 {
     const fs::path from = folderOf(inPath), to = folderOf(outPath);

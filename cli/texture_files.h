@@ -16,6 +16,9 @@ void lookUpMaterialImages(MeshTexture& texture, const std::string& inPath, std::
 //! paths rebased there; for an OBJ output in another folder the input's .mtl files copied next to
 //! it with their image paths rebased, or, when the input named images but no .mtl (PLY), one
 //! `<out>.mtl` written.
+//! `image` (a path relative to `inPath`'s folder, or absolute) as seen from `outPath`'s folder.
+std::string rebaseImage(const std::string& image, const std::string& inPath, const std::string& outPath);
+
 void placeTextureFiles(MeshTexture& texture, const std::string& inPath, const std::string& outPath);
 
 }  // namespace fieldcvt::cli

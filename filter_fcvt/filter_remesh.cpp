@@ -271,13 +271,11 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
                                            : keep.colour               ? "colour"
                                                                        : "quality")
                                       .arg(input->label()));
-        // The selection's kept faces keep their own coordinates only when the whole layer was remeshed.
-        if (!inputs.selectedOnly || region.wholeMesh) {
-            const QString textureLine = transferLayerTexture(*input, result.mesh, result.threads, *output);
-            if (!textureLine.isEmpty()) outputLines.push_back(textureLine);
-        } else if (input->hasDataMask(MeshModel::MM_WEDGTEXCOORD)) {
-            outputLines.push_back("FCVT: texture coordinates are not carried when remeshing a selection: the new layer has none");
-        }
+        // After a selection-only run the kept faces keep their own coordinates.
+        const QString textureLine = transferLayerTexture(
+            *input, result.mesh, inputs.selectedOnly && !region.wholeMesh ? region.faceOrigin : std::vector<int>{},
+            result.threads, *output);
+        if (!textureLine.isEmpty()) outputLines.push_back(textureLine);
         if (inputs.colorIrregular)
             outputLines.push_back("FCVT valence colours on '" + output->label() +
                                   "': " + applyValenceColours(result.mesh, *output));

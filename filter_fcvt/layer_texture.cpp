@@ -2,8 +2,7 @@
 
 #include "mesh_convert.h"
 
-#include "texture_bake.h"
-#include "texture_transfer.h"
+#include "texture_output.h"
 
 #include <QFileInfo>
 #include <QImage>
@@ -75,21 +74,24 @@ std::vector<fieldcvt::TextureImage> layerImages(const MeshModel& input)
     return images;
 }
 
-//! Gives `output` the baked image under `name`: in the layer (2022.02 and later; File > Export
-//! Mesh saves it beside the mesh) or, in 2020.09, whose layers hold only names, as a PNG beside
-//! the input's file (as MeshLab's own texture filters write theirs). An error text, or empty.
-QString storeBakedImage(const MeshModel& input, const QImage& image, const std::string& name, MeshModel& output)
+//! Gives `output` its textures: the input's first when kept faces still use them (`inputKept`),
+//! then the baked image under `name`: in the layer (2022.02 and later; File > Export Mesh saves it
+//! beside the mesh) or, in 2020.09, whose layers hold only names, as a PNG beside the input's
+//! file (as MeshLab's own texture filters write theirs). An error text, or empty.
+QString storeBakedImage(const MeshModel& input, bool inputKept, const QImage& image, const std::string& name, MeshModel& output)
 {
 #if FCVT_MESHLAB_API == 2022
-    (void)input;
     output.clearTextures();
+    if (inputKept)
+        for (const std::string& texture : input.cm.textures) output.addTexture(texture, input.getTexture(texture));
     output.addTexture(name, image);
     return {};
 #else
     if (input.fullName().isEmpty()) return "the input layer has no file to write the image beside";
     const QString path = input.pathName() + "/" + QString::fromStdString(name);
     if (!image.save(path, "PNG")) return "cannot write " + path;
-    output.cm.textures = {name};
+    output.cm.textures = inputKept ? input.cm.textures : std::vector<std::string>{};
+    output.cm.textures.push_back(name);
     return {};
 #endif
 }
@@ -112,7 +114,8 @@ void writeWedges(const fieldcvt::MeshTexture& texture, MeshModel& output)
 
 }  // namespace
 
-QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& outputMesh, int threads, MeshModel& output)
+QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& outputMesh, const std::vector<int>& faceOrigin,
+                             int threads, MeshModel& output)
 {
     const fieldcvt::TriMesh layerMesh = toTriMesh(input.cm);
     QString problem;
@@ -120,37 +123,33 @@ QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& ou
     if (texture.empty())
         return problem.isEmpty() ? QString() : "FCVT: texture coordinates of '" + input.label() + "' dropped: " + problem;
     if (size_t(output.cm.fn) != outputMesh.faces.size()) return "FCVT: texture coordinates not carried (face count changed)";
-    fieldcvt::TextureTransferParams transferParams;
-    transferParams.threads = threads;
-    const fieldcvt::TextureTransferResult kept = fieldcvt::transferTexture(layerMesh, texture, outputMesh, transferParams);
-    const QString seams = QString("%1 charts, %2 output faces (%3 %) across a seam")
-                              .arg(kept.charts)
-                              .arg(kept.continuedFaces)
-                              .arg(100.0 * kept.continuedShare, 0, 'f', 2);
-    QString bakeProblem;
-    if (kept.continuedShare > fieldcvt::kBakeAboveContinuedShare) {
-        const std::vector<fieldcvt::TextureImage> images = layerImages(input);
-        if (!images.empty() && images.size() == texture.materials.size()) {
-            fieldcvt::TextureBakeParams bakeParams;
-            bakeParams.threads = threads;
-            const fieldcvt::TextureBakeResult baked = fieldcvt::bakeTexture(layerMesh, texture, images, outputMesh, bakeParams);
-            const std::string name = output.label().toStdString() + "_texture.png";
-            bakeProblem = storeBakedImage(input, toQImage(baked.image), name, output);
-            if (bakeProblem.isEmpty()) {
-                writeWedges(baked.texture, output);
-                return QString(
-                           "FCVT: texture baked into '%1' (%2 x %3, one triangle per face): keeping the input's atlas (%4) "
-                           "would stretch them")
-                    .arg(QString::fromStdString(name))
-                    .arg(baked.image.width)
-                    .arg(baked.image.height)
-                    .arg(seams);
-            }
-        } else {
-            bakeProblem = "the input's texture images cannot be read";
+    fieldcvt::OutputTextureParams params;
+    params.threads = threads;
+    fieldcvt::OutputTexture made =
+        fieldcvt::makeOutputTexture(layerMesh, texture, layerImages(input), outputMesh, faceOrigin, params);
+    const QString seams = QString("%1 charts, %2 new faces (%3 %) across a seam")
+                              .arg(made.charts)
+                              .arg(made.continuedFaces)
+                              .arg(100.0 * made.continuedShare, 0, 'f', 2);
+    QString bakeProblem = made.bakeImpossible ? "the input's texture images cannot be read" : QString();
+    if (made.baked) {
+        const std::string name = output.label().toStdString() + "_texture.png";
+        bakeProblem = storeBakedImage(input, made.bakedMaterial > 0, toQImage(made.bakedImage), name, output);
+        if (bakeProblem.isEmpty()) {
+            writeWedges(made.texture, output);
+            return QString(
+                       "FCVT: texture baked into '%1' (%2 x %3, one triangle per face): keeping the input's atlas (%4) "
+                       "would stretch them")
+                .arg(QString::fromStdString(name))
+                .arg(made.bakedImage.width)
+                .arg(made.bakedImage.height)
+                .arg(seams);
         }
+        // The image could not be stored: the atlas kept after all.
+        params.method = fieldcvt::TextureMethod::Keep;
+        made = fieldcvt::makeOutputTexture(layerMesh, texture, {}, outputMesh, faceOrigin, params);
     }
-    writeWedges(kept.texture, output);
+    writeWedges(made.texture, output);
 #if FCVT_MESHLAB_API == 2022
     output.clearTextures();
     for (const std::string& name : input.cm.textures) output.addTexture(name, input.getTexture(name));

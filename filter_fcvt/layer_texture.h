@@ -7,6 +7,8 @@
 #include "mesh.h"
 #include "mesh_texture.h"
 
+#include <vector>
+
 namespace fcvt_plugin {
 
 //! The layer's live faces with their wedge texture coordinates (face i = the i-th live face, its
@@ -20,6 +22,9 @@ fieldcvt::MeshTexture layerTexture(const MeshModel& layer, const fieldcvt::TriMe
 //! a seam, named "<layer>_texture.png" (held in the layer on MeshLab 2022.02 and later; on
 //! 2020.09, whose layers hold names only, a file beside the input's). Returns the log line
 //! (empty when the input has no texture coordinates).
-QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& outputMesh, int threads, MeshModel& output);
+//! After a selection-only run (`faceOrigin`: output face -> live input face, -1 for a new one)
+//! the kept faces keep their coordinates; without one `faceOrigin` is empty.
+QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& outputMesh, const std::vector<int>& faceOrigin,
+                             int threads, MeshModel& output);
 
 }  // namespace fcvt_plugin

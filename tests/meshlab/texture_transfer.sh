@@ -22,7 +22,7 @@ out="$work/out/bunny-fcvt.ply"
 run_meshlabserver "$server" "$work/out/log.txt" -i "$work/out/bunny.ply" -o "$out" -m wt -s "$work/out/remesh.mlx"
 [ "$MLS_RC" -eq 0 ] || fail "meshlabserver exited with $MLS_RC"
 grep -q "FCVT: new layer" "$work/out/log.txt" || fail "filter not run"
-grep -Eq "FCVT: texture baked into 'bunny_FCVT_texture.png' \([0-9]+ x [0-9]+, one triangle per face\): keeping the input's atlas \(190 charts, [0-9]+ output faces \([0-9.]+ %\) across a seam\) would stretch them" \
+grep -Eq "FCVT: texture baked into 'bunny_FCVT_texture.png' \([0-9]+ x [0-9]+, one triangle per face\): keeping the input's atlas \(190 charts, [0-9]+ new faces \([0-9.]+ %\) across a seam\) would stretch them" \
   "$work/out/log.txt" || fail "no bake in the log"
 [ -s "$work/out/bunny_FCVT_texture.png" ] || fail "the baked image was not saved"
 grep -aq "^comment TextureFile bunny_FCVT_texture.png" "$out" || fail "the output names no baked texture"
@@ -33,6 +33,31 @@ import json, sys
 r = json.load(open(sys.argv[1]))
 print(f"difference {r['difference']:.3f}, half-pixel yardstick {r['half_pixel']:.3f}, ratio {r['ratio']:.2f}, "
       f"seam faces {100 * r['seam_faces']:.1f} %")
+sys.exit(0 if r["ratio"] <= 2.0 else 1)
+PY
+
+# Remesh only selected faces (the upper half, y > 8.5): the kept faces keep the input's texture
+# and coordinates, the new ones get a baked one: two textures on the new layer.
+mlx="$work/out/selected.mlx"
+{ echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
+  echo ' <filter name="Conditional Face Selection">'
+  echo '  <Param type="RichString" name="condSelect" value="(y0+y1+y2)/3 &gt; 8.5" description="boolean function" tooltip="the upper half"/>'
+  echo ' </filter>'
+  sed -n '/<filter /,/<\/filter>/p' "$work/out/remesh.mlx" | sed -e 's/\(name="vertexCount"[^>]*value="\)[^"]*"/\12500"/' \
+    -e 's/\(name="selectedOnly"[^>]*value="\)[^"]*"/\1true"/'
+  echo '</FilterScript>'; } > "$mlx"
+region_out="$work/out/bunny-region.ply"
+run_meshlabserver "$server" "$work/out/log-region.txt" -i "$work/out/bunny.ply" -o "$region_out" -m wt -s "$mlx"
+[ "$MLS_RC" -eq 0 ] || fail "meshlabserver (selection) exited with $MLS_RC"
+grep -q "FCVT region: [1-9][0-9]* piece" "$work/out/log-region.txt" || fail "no region line in the log"
+grep -q "FCVT: texture baked into 'bunny_FCVT_texture.png'" "$work/out/log-region.txt" || fail "selection: no bake in the log"
+[ "$(grep -ac '^comment TextureFile ' "$region_out")" -eq 2 ] || fail "selection: the output should name two textures"
+grep -aq "^comment TextureFile TextureDouble_A.png" "$region_out" || fail "selection: the input's texture is not kept"
+"$cli" texture-compare "$work/out/bunny.ply" "$region_out" --json > "$work/out/compare-region.json"
+python3 - "$work/out/compare-region.json" <<'PY' || fail "the selection's texture differs from the input's"
+import json, sys
+r = json.load(open(sys.argv[1]))
+print(f"selection: difference {r['difference']:.3f}, half-pixel yardstick {r['half_pixel']:.3f}, ratio {r['ratio']:.2f}")
 sys.exit(0 if r["ratio"] <= 2.0 else 1)
 PY
 echo "PASS"
