@@ -7,6 +7,7 @@
 #include "disjoint_sets.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <tuple>
 
@@ -36,6 +37,10 @@ const Vec2& cornerUv(const TriMesh& mesh, const MeshTexture& texture, int f, int
     const int k = face[0] == vertex ? 0 : face[1] == vertex ? 1 : 2;
     return texture.uv[3 * static_cast<std::size_t>(f) + k];
 }
+
+//! A corner's own coordinates farther than this many times its face's size (in the home face's
+//! map) from that map's are across a seam.
+constexpr double kSeamJump = 1.0;
 
 bool sameUv(const Vec2& a, const Vec2& b, double tolerance) { return (a - b).cwiseAbs().maxCoeff() <= tolerance; }
 
@@ -136,17 +141,26 @@ TextureTransferResult transferTexture(const TriMesh& input, const MeshTexture& i
     for (int f = 0; f < output.faceCount(); ++f) {
         const int home = centroidFace[f];
         out.faceMaterial[f] = inputTexture.faceMaterial[home];
+        // The corners by the home face's map, and the face's size there: a corner whose own
+        // coordinates jump farther than that from them lies across a seam, even one inside a
+        // chart (a chart that meets itself, as a torus cut open along two circles).
+        std::array<Vec2, 3> extended;
+        for (int k = 0; k < 3; ++k) extended[k] = continuedUv(input, inputTexture, home, output.vertices[output.faces[f][k]]);
+        const double size = std::max(
+            {(extended[0] - extended[1]).norm(), (extended[1] - extended[2]).norm(), (extended[2] - extended[0]).norm()});
         bool continued = false;
         for (int k = 0; k < 3; ++k) {
-            const int v = output.faces[f][k];
-            const ClosestPoint& cp = atVertex[v];
+            const ClosestPoint& cp = atVertex[output.faces[f][k]];
             Vec2& uv = out.uv[3 * static_cast<std::size_t>(f) + k];
+            uv = extended[k];
             if (chart[cp.face] == chart[home]) {
-                uv = interpolatedUv(inputTexture, cp);
-            } else {
-                uv = continuedUv(input, inputTexture, home, output.vertices[v]);
-                continued = true;
+                const Vec2 own = interpolatedUv(inputTexture, cp);
+                if ((own - extended[k]).norm() <= kSeamJump * size) {
+                    uv = own;
+                    continue;
+                }
             }
+            continued = true;
         }
         result.continuedFaces += continued;
     }

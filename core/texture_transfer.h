@@ -32,9 +32,10 @@ std::vector<int> textureCharts(const TriMesh& mesh, const MeshTexture& texture, 
 
 //! Per-corner coordinates for `output` (in `input`'s frame). Each output face takes the chart
 //! of its centroid's closest input face f*; a corner whose closest point lies in that chart takes
-//! the coordinates interpolated there, any other corner is continued with f*'s affine map (its
-//! barycentric coordinates in f*'s plane, unbounded, applied to f*'s coordinates). The face's
-//! material is f*'s. `inputTexture` must fit `input` (textureProblem is empty).
+//! the coordinates interpolated there, unless they jump from f*'s affine map by more than the
+//! face's size there (a seam inside the chart); any other corner is continued with f*'s affine
+//! map (its barycentric coordinates in f*'s plane, unbounded, applied to f*'s coordinates). The
+//! face's material is f*'s. `inputTexture` must fit `input` (textureProblem is empty).
 TextureTransferResult transferTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
                                       const TextureTransferParams& params = {});
 

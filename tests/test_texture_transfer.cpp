@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -202,6 +203,48 @@ TEST(TextureTransfer, SameCoordinatesOnAnyThreadCount)
         EXPECT_EQ(r.texture.faceMaterial, one.texture.faceMaterial);
         EXPECT_EQ(r.continuedFaces, one.continuedFaces);
     }
+}
+
+//! An open cylinder of n x m cells, its texture one chart cut open along the line at angle 0
+//! (u = i / n, the last column's corners at u = 1); `phase` turns the vertices (in cells).
+TriMesh cutCylinder(int n, int m, double phase, MeshTexture* texture)
+{
+    TriMesh c;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j <= m; ++j) {
+            const double a = 2 * M_PI * (i + phase) / n;
+            c.vertices.emplace_back(std::cos(a), std::sin(a), 2.0 * j / m);
+        }
+    const auto v = [&](int i, int j) { return (i % n) * (m + 1) + j; };
+    if (texture) texture->materials = {{"", ""}};
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const std::array<std::array<int, 2>, 6> corners = {
+                {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j}, {i + 1, j + 1}, {i, j + 1}}};
+            for (int t = 0; t < 2; ++t) {
+                c.faces.push_back({v(corners[3 * t][0], corners[3 * t][1]), v(corners[3 * t + 1][0], corners[3 * t + 1][1]),
+                                   v(corners[3 * t + 2][0], corners[3 * t + 2][1])});
+                if (!texture) continue;
+                for (int k = 0; k < 3; ++k)
+                    texture->uv.emplace_back(double(corners[3 * t + k][0]) / n, double(corners[3 * t + k][1]) / m);
+                texture->faceMaterial.push_back(0);
+            }
+        }
+    return c;
+}
+
+TEST(TextureTransfer, FacesAcrossASeamInsideOneChartAreContinued)
+{
+    MeshTexture texture;
+    const TriMesh input = cutCylinder(24, 6, 0.0, &texture), output = cutCylinder(17, 5, 0.5, nullptr);
+    const TextureTransferResult r = transferTexture(input, texture, output);
+    EXPECT_EQ(r.charts, 1);  // one chart that meets itself along the cut
+    // The faces across the cut (one column of 17) are continued: none spans the atlas.
+    EXPECT_GE(r.continuedFaces, 10);
+    for (int f = 0; f < output.faceCount(); ++f)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_LT(std::abs(r.texture.uv[3 * f + k].x() - r.texture.uv[3 * f + (k + 1) % 3].x()), 2.0 / 17)
+                << "face " << f << " spans the atlas";
 }
 
 }  // namespace
