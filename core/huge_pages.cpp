@@ -82,6 +82,17 @@ long long adviseNewHugePages()
     return adviseHugePages();
 }
 
+bool releaseFreeMemory(std::size_t atLeast)
+{
+#if defined(__GLIBC__)
+    if (mallinfo2().fordblks < atLeast) return false;
+    return malloc_trim(0) != 0;
+#else
+    (void)atLeast;
+    return false;
+#endif
+}
+
 HugePageHeap::HugePageHeap()
 {
     {

@@ -5,6 +5,8 @@
 // the neighbour lists miss the TLB far less in 2 MB pages: whole commands 5-10 % faster
 // (docs/measurements.md, "Huge pages in-process"). The output does not depend on it.
 
+#include <cstddef>
+
 namespace fieldcvt {
 
 //! Marks the process's anonymous private memory of at least one 2 MB page (the heap, malloc's
@@ -22,6 +24,13 @@ long long adviseHugePages();
 //! 1 100 mappings of libraries and plugins), paid before each stage: 1-3 % of the filter's time
 //! (bench/filter_vs_cli.py).
 long long adviseNewHugePages();
+
+//! Gives the free memory inside malloc's heap back to the system when it holds at least `atLeast`
+//! bytes free (glibc's mallinfo2 and malloc_trim; nothing elsewhere): blocks under the 32 MiB
+//! mapping threshold (HugePageHeap) that a stage freed would otherwise stay resident while the
+//! next stages allocate more (nefertiti subdivided twice to 100 000 vertices: peak resident
+//! memory 886 MB before, 600 MB with this and EnergyFunction::releaseDiagram). remesh() calls it before each stage. Returns whether it trimmed.
+bool releaseFreeMemory(std::size_t atLeast = std::size_t(32) << 20);
 
 //! While alive, malloc keeps room to grow: the heap grows by at least 64 MiB at a time
 //! (M_TOP_PAD) and blocks up to 32 MiB come from it rather than from their own mappings

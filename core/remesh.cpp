@@ -1,7 +1,6 @@
 #include "remesh.h"
 
 #include "errors.h"
-#include "huge_pages.h"
 #include "remesh_stages.h"
 #include "thread_budget.h"
 
@@ -125,6 +124,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     optimiseSamples(run);
     extractMesh(run);
     remeshThinPartsAgain(run);
+    run.energy->releaseDiagram();  // the mesh is extracted: the diagram's memory is free for the next stages
     optimiseValence(run);
     projectOnInput(run);
     attachOutputField(run);

@@ -51,6 +51,7 @@ public:
     {
         const auto start = Clock::now();
         report(name, percent_);
+        releaseFreeMemory();   // what the earlier stages freed, back to the system before this one allocates
         adviseNewHugePages();  // the memory the earlier stages added, before this one works on it
         try {
             stage();

@@ -412,4 +412,12 @@ void RestrictedVoronoiDiagram::Impl::addSeamTriangles(const std::vector<int>& ch
         }
 }
 
+void RestrictedVoronoiDiagram::releaseWorkspace()
+{
+    for (ChunkOutput& chunk : impl_->chunks) chunk = ChunkOutput{};
+    std::vector<Scratch>().swap(impl_->scratch);
+    std::vector<RvdEdge>().swap(impl_->edgeBuffer);
+    std::vector<int>().swap(impl_->edgeStart);
+}
+
 }  // namespace fieldcvt

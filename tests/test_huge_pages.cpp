@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <vector>
+
 #include <malloc.h>
 
 #include <cstddef>
@@ -69,6 +72,23 @@ TEST(HugePages, OnlyMemoryMallocAddedIsLookedFor)
     EXPECT_GE(adviseNewHugePages(), (64 - 4) << 20);
     const std::string flags = flagsOfMappingAt(block.get() + size / 2);
     EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+}
+
+TEST(HugePages, FreedMemoryIsGivenBackAboveTheThreshold)
+{
+    if (mallinfo2().arena == 0) GTEST_SKIP() << "this allocator reports no memory to mallinfo2";
+    const HugePageHeap heap;  // blocks up to 32 MiB from the heap, as in remesh()
+    {
+        // 64 MiB in 1 MiB blocks, touched, then freed: free memory inside the heap.
+        std::vector<std::unique_ptr<char[]>> blocks;
+        for (int i = 0; i < 64; ++i) {
+            blocks.emplace_back(new char[1 << 20]);
+            std::memset(blocks.back().get(), 1, 1 << 20);
+        }
+    }
+    EXPECT_GE(mallinfo2().fordblks, std::size_t(32) << 20);
+    EXPECT_FALSE(releaseFreeMemory(std::size_t(1) << 40)) << "under the threshold: nothing done";
+    EXPECT_TRUE(releaseFreeMemory());
 }
 
 TEST(HugePages, NestedScopesEndCleanly)

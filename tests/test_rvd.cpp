@@ -197,6 +197,27 @@ TEST(Rvd, WarmStartedNeighbourSearchGivesTheSameDiagram)
     for (size_t e = 0; e < a.edges.size(); ++e) EXPECT_EQ(a.edges[e].length, b.edges[e].length);
 }
 
+TEST(Rvd, ReleasedWorkspaceGivesTheSameDiagramAgain)
+{
+    // releaseWorkspace() frees what compute() keeps between calls; the next call allocates it
+    // again and must give the same diagram, pieces and triangles included.
+    const TriMesh surface = testmesh::torus(60, 30);
+    const std::vector<Vec3> seeds = sampleSurfaceUniform(surface, 400, 8);
+    RvdOptions options;
+    options.edges = options.triangles = true;
+    RestrictedVoronoiDiagram rvd(surface);
+    RvdResult before, after;
+    rvd.compute(seeds, options, before);
+    rvd.releaseWorkspace();
+    rvd.compute(seeds, options, after);
+    EXPECT_EQ(before.mass, after.mass);
+    EXPECT_EQ(before.energy, after.energy);
+    EXPECT_EQ(before.triangles, after.triangles);
+    EXPECT_EQ(before.pieceTriangles, after.pieceTriangles);
+    ASSERT_EQ(before.edges.size(), after.edges.size());
+    for (size_t e = 0; e < before.edges.size(); ++e) EXPECT_EQ(before.edges[e].length, after.edges[e].length);
+}
+
 TEST(Rvd, EachNeighbourClipsAPolygonOnce)
 {
     // Seeds on a short segment in one corner of a plane of two triangles: every cell is a strip
