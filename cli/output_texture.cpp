@@ -87,7 +87,9 @@ WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& input
     const std::vector<TextureImage> images =
         mode == TextureMode::Keep ? std::vector<TextureImage>{} : inputImages(withImages, inPath, imageProblems);
     result.made = makeOutputTexture(input, withImages, images, output, faceOrigin, params);
-    if (result.made.bakeImpossible)
+    if (result.made.tooManyFacesToBake)
+        warnings.push_back("too many faces to bake a texture within 4096 x 4096 texels: the input's atlas is kept");
+    else if (result.made.bakeImpossible)
         for (const std::string& problem : imageProblems) warnings.push_back(problem + ": no texture to bake, the atlas is kept");
     MeshTexture& texture = result.made.texture;
     if (result.made.baked) {

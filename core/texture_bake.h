@@ -18,12 +18,17 @@ namespace fieldcvt {
 //! the baked one 1.7 times; docs/measurements.md).
 constexpr double kBakeAboveContinuedShare = 0.1;
 
+//! The smallest cell worth baking into, in texels: its triangles' legs are 3 texels long
+//! inside their margins.
+constexpr int kMinBakeCell = 8;
+
 struct TextureBakeParams {
     //! Side of the square cell that holds two output faces, in texels; 0 = chosen so that the
     //! new image has about eight times as many texels on the surface as the input's images (the
     //! input's detail kept through two resamplings and the margins), within [16, 64] and `maxSize`.
     int cellSize = 0;
-    //! The new image's largest side, in texels (default 4096; the cell size shrinks to fit, not below 4).
+    //! The new image's largest side, in texels (default 4096; the cell size shrinks to fit, not
+    //! below kMinBakeCell: with more faces than that allows, about 520 000, no bake is made).
     int maxSize = 4096;
     //! OpenMP threads; 0 = OpenMP's default. The result does not depend on it.
     int threads = 0;

@@ -46,14 +46,16 @@ OutputTexture makeOutputTexture(const TriMesh& input, const MeshTexture& inputTe
 
     const bool wantBake = params.method == TextureMethod::Bake ||
                           (params.method == TextureMethod::Auto && kept.continuedShare > params.bakeAboveContinuedShare);
-    result.bakeImpossible = wantBake && inputImages.size() != inputTexture.materials.size();
+    TextureBakeParams bakeParams;
+    bakeParams.threads = params.threads;
+    bakeParams.maxSize = params.bakeMaxSize;
+    result.tooManyFacesToBake = wantBake && bakeCellSize(input, inputTexture, inputImages, part, bakeParams) < kMinBakeCell;
+    result.bakeImpossible = wantBake && (inputImages.size() != inputTexture.materials.size() || result.tooManyFacesToBake);
     MeshTexture& texture = result.texture;
     texture.materials = inputTexture.materials;
     texture.libraries = inputTexture.libraries;
     MeshTexture partTexture;
     if (wantBake && !result.bakeImpossible) {
-        TextureBakeParams bakeParams;
-        bakeParams.threads = params.threads;
         TextureBakeResult baked = bakeTexture(input, inputTexture, inputImages, part, bakeParams);
         partTexture = std::move(baked.texture);
         result.baked = true;

@@ -21,7 +21,8 @@ enum class TextureMethod {
 struct OutputTextureParams {
     TextureMethod method = TextureMethod::Auto;
     double bakeAboveContinuedShare = kBakeAboveContinuedShare;  //!< 0.1
-    int threads = 0;  //!< OpenMP threads; 0 = OpenMP's default. The result does not depend on it.
+    int threads = 0;         //!< OpenMP threads; 0 = OpenMP's default. The result does not depend on it.
+    int bakeMaxSize = 4096;  //!< the baked image's largest side (TextureBakeParams::maxSize)
 };
 
 struct OutputTexture {
@@ -33,7 +34,10 @@ struct OutputTexture {
     int charts = 0;               //!< the input atlas's charts
     int continuedFaces = 0;       //!< new faces across a seam when the atlas is kept
     double continuedShare = 0.0;  //!< continuedFaces / new faces
-    bool bakeImpossible = false;  //!< a bake was wanted but `inputImages` was empty: the atlas kept
+    //! A bake was wanted but `inputImages` was empty, or the output has too many faces for cells
+    //! of kMinBakeCell texels within `bakeMaxSize`: the atlas kept.
+    bool bakeImpossible = false;
+    bool tooManyFacesToBake = false;  //!< the second reason
 };
 
 //! The texture of `output`, remeshed from `input` (`inputTexture` fits it, textureProblem is

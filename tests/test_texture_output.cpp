@@ -59,6 +59,22 @@ TEST(TextureOutput, KeepAndNoImagesKeepTheAtlas)
     EXPECT_EQ(noImages.texture.uv, kept.texture.uv);
 }
 
+TEST(TextureOutput, TooManyFacesForTheImageKeepTheAtlas)
+{
+    // 50 output faces, at most 16 texels a side: cells of 8 texels do not fit.
+    const TriMesh input = planeGrid(8), output = planeGrid(5);
+    OutputTextureParams params;
+    params.method = TextureMethod::Bake;
+    params.bakeMaxSize = 16;
+    const OutputTexture made = makeOutputTexture(input, chartPerFace(input), {grey(64)}, output, {}, params);
+    EXPECT_FALSE(made.baked);
+    EXPECT_TRUE(made.bakeImpossible);
+    EXPECT_TRUE(made.tooManyFacesToBake);
+    EXPECT_EQ(made.texture.uv.size(), 3 * output.faces.size());
+    params.bakeMaxSize = 4096;
+    EXPECT_TRUE(makeOutputTexture(input, chartPerFace(input), {grey(64)}, output, {}, params).baked);
+}
+
 TEST(TextureOutput, KeptFacesOfASelectionKeepTheirCoordinatesAndTheNewOnesAreBaked)
 {
     // The output: the input's faces, the first half kept (origin = the face), the rest "new".
