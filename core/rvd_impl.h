@@ -181,7 +181,8 @@ struct RestrictedVoronoiDiagram::Impl {
 
     // rvd.cpp
     Impl(const TriMesh& s, const std::vector<double>& faceDensity);
-    void buildPieces(RvdResult& result) const;
+    //! Frees the chunks' fragments, links and triangles as it uses them.
+    void buildPieces(RvdResult& result);
     void addSeamTriangles(const std::vector<int>& chunkStart, const std::vector<rvd_detail::Fragment>& fragments,
                           const std::function<int(int)>& pieceOf, RvdResult& result) const;
 
