@@ -2,11 +2,14 @@
 #include "texture_bake.h"
 
 #include "closest_point.h"
+#include "rvd.h"
 #include "thread_budget.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 
 namespace fieldcvt {
 
@@ -28,6 +31,39 @@ int gridRows(std::size_t faces, int columns)
 {
     const std::size_t cells = (faces + 1) / 2;
     return std::max(1, static_cast<int>((cells + columns - 1) / columns));
+}
+
+//! Where each face goes: slot 2 c + h is half h of cell c; cell c lies at column cellAt[c][0],
+//! row cellAt[c][1] of the grid.
+struct Layout {
+    std::vector<int> faceOfSlot;
+    std::vector<std::array<int, 2>> cellAt;
+};
+
+//! Interleaves the bits of x and y (a 2D Morton code).
+std::uint64_t interleave(std::uint32_t x, std::uint32_t y)
+{
+    std::uint64_t code = 0;
+    for (int b = 0; b < 32; ++b) code |= (std::uint64_t((x >> b) & 1) << (2 * b)) | (std::uint64_t((y >> b) & 1) << (2 * b + 1));
+    return code;
+}
+
+Layout cellLayout(const TriMesh& output, int columns, int rows)
+{
+    Layout layout;
+    std::vector<Vec3> centroids;
+    centroids.reserve(output.faces.size());
+    for (const Face& f : output.faces)
+        centroids.push_back((output.vertices[f[0]] + output.vertices[f[1]] + output.vertices[f[2]]) / 3.0);
+    layout.faceOfSlot = mortonIndexOrder(centroids);
+    std::vector<std::pair<std::uint64_t, std::array<int, 2>>> grid;
+    grid.reserve(static_cast<std::size_t>(columns) * rows);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c) grid.push_back({interleave(std::uint32_t(c), std::uint32_t(r)), {c, r}});
+    std::sort(grid.begin(), grid.end());
+    const std::size_t cells = (output.faces.size() + 1) / 2;
+    for (std::size_t i = 0; i < cells; ++i) layout.cellAt.push_back(grid[i].second);
+    return layout;
 }
 
 Vec3 inputColour(const MeshTexture& texture, const std::vector<TextureImage>& images, const ClosestPoint& cp)
@@ -79,14 +115,20 @@ TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputText
     image.height = rows * cell;
     image.rgb.assign(3 * static_cast<std::size_t>(image.width) * image.height, 255);
 
+    // Viewers sample a texture through mipmaps: seen from afar, a texel is the mean of a block
+    // of its neighbours. So neighbours in the image hold neighbours on the surface: faces in the
+    // Morton order of their centroids, two to a cell, cells along a Morton curve of the grid
+    // (unrelated faces side by side turned a remeshed model into a mosaic in MeshLab's view).
+    const Layout layout = cellLayout(output, columns, rows);
     MeshTexture& texture = result.texture;
     texture.materials = {TextureMaterial{"fcvt_baked", ""}};
     texture.faceMaterial.assign(output.faces.size(), 0);
     texture.uv.resize(3 * output.faces.size());
-    for (int f = 0; f < output.faceCount(); ++f) {
-        const int c = f / 2;
-        const Vec2 origin((c % columns) * cell, (c / columns) * cell);
-        const std::array<Vec2, 3> corners = slotTriangle(f % 2, cell);
+    for (std::size_t slot = 0; slot < layout.faceOfSlot.size(); ++slot) {
+        const int f = layout.faceOfSlot[slot];
+        const std::array<int, 2>& at = layout.cellAt[slot / 2];
+        const Vec2 origin(at[0] * cell, at[1] * cell);
+        const std::array<Vec2, 3> corners = slotTriangle(static_cast<int>(slot % 2), cell);
         for (int k = 0; k < 3; ++k) {
             const Vec2 texel = origin + corners[k];
             texture.uv[3 * static_cast<std::size_t>(f) + k] = Vec2(texel.x() / image.width, 1.0 - texel.y() / image.height);
@@ -104,7 +146,7 @@ TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputText
         for (int y = 0; y < cell; ++y)
             for (int x = 0; x < cell; ++x) {
                 const int slot = (x + y + 1 < cell || 2 * c + 1 >= output.faceCount()) ? 0 : 1;
-                const int f = static_cast<int>(2 * c + slot);
+                const int f = layout.faceOfSlot[static_cast<std::size_t>(2 * c + slot)];
                 const std::array<Vec2, 3> t = slotTriangle(slot, cell);
                 // The texel centre's closest point in the face's triangle, as barycentric coordinates.
                 Vec3 w;
@@ -116,8 +158,8 @@ TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputText
                 const ClosestPoint cp = hint[slot] >= 0 ? tree.closest(p, hint[slot]) : tree.closest(p);
                 hint[slot] = cp.face;
                 const Vec3 colour = inputColour(inputTexture, inputImages, cp);
-                const std::size_t i =
-                    3 * ((static_cast<std::size_t>(c / columns) * cell + y) * image.width + (c % columns) * cell + x);
+                const std::array<int, 2>& at = layout.cellAt[static_cast<std::size_t>(c)];
+                const std::size_t i = 3 * ((static_cast<std::size_t>(at[1]) * cell + y) * image.width + at[0] * cell + x);
                 for (int k = 0; k < 3; ++k)
                     image.rgb[i + k] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[k], 0.0, 255.0)));
             }

@@ -77,8 +77,9 @@ std::vector<fieldcvt::TextureImage> layerImages(const MeshModel& input)
 //! Gives `output` its textures: the input's first when kept faces still use them (`inputKept`),
 //! then the baked image under `name`: in the layer (2022.02 and later; File > Export Mesh saves it
 //! beside the mesh) or, in 2020.09, whose layers hold only names, as a PNG beside the input's
-//! file (as MeshLab's own texture filters write theirs). An error text, or empty.
-QString storeBakedImage(const MeshModel& input, bool inputKept, const QImage& image, const std::string& name, MeshModel& output)
+//! file (as MeshLab's own texture filters write theirs), never over an existing file: `name`
+//! then gets a number ("bunny_FCVT_texture_2.png"). An error text, or empty.
+QString storeBakedImage(const MeshModel& input, bool inputKept, const QImage& image, std::string& name, MeshModel& output)
 {
 #if FCVT_MESHLAB_API == 2022
     output.clearTextures();
@@ -88,8 +89,12 @@ QString storeBakedImage(const MeshModel& input, bool inputKept, const QImage& im
     return {};
 #else
     if (input.fullName().isEmpty()) return "the input layer has no file to write the image beside";
-    const QString path = input.pathName() + "/" + QString::fromStdString(name);
+    const QString stem = QFileInfo(QString::fromStdString(name)).completeBaseName();
+    QString file = QString::fromStdString(name);
+    for (int i = 2; QFileInfo::exists(input.pathName() + "/" + file); ++i) file = QString("%1_%2.png").arg(stem).arg(i);
+    const QString path = input.pathName() + "/" + file;
     if (!image.save(path, "PNG")) return "cannot write " + path;
+    name = file.toStdString();
     output.cm.textures = inputKept ? input.cm.textures : std::vector<std::string>{};
     output.cm.textures.push_back(name);
     return {};
@@ -135,7 +140,7 @@ QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& ou
                           : made.bakeImpossible   ? "the input's texture images cannot be read"
                                                   : QString();
     if (made.baked) {
-        const std::string name = output.label().toStdString() + "_texture.png";
+        std::string name = output.label().toStdString() + "_texture.png";
         bakeProblem = storeBakedImage(input, made.bakedMaterial > 0, toQImage(made.bakedImage), name, output);
         if (bakeProblem.isEmpty()) {
             writeWedges(made.texture, output);

@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <random>
+#include <map>
+#include <set>
 #include <cmath>
 
 namespace fieldcvt {
@@ -84,23 +88,62 @@ TEST(TextureBake, EachFaceHasItsOwnTriangleWithAMarginToTheOthers)
     params.cellSize = 12;
     const TextureBakeResult baked = bakeTexture(input, planeUv(input), {gradient(64)}, output, params);
     EXPECT_EQ(baked.cellSize, 12);
-    const int columns = baked.image.width / 12;
+    std::set<std::array<int, 3>> taken;  // (cell column, cell row, half)
     for (int f = 0; f < output.faceCount(); ++f) {
-        const int cell = f / 2;
-        const Vec2 origin((cell % columns) * 12.0, (cell / columns) * 12.0);
+        std::array<Vec2, 3> texel;
+        Vec2 low = Vec2::Constant(1e300);
         for (int k = 0; k < 3; ++k) {
             const Vec2& uv = baked.texture.uv[3 * f + k];
-            const Vec2 local = Vec2(uv.x() * baked.image.width, (1.0 - uv.y()) * baked.image.height) - origin;
+            texel[k] = Vec2(uv.x() * baked.image.width, (1.0 - uv.y()) * baked.image.height);
+            low = low.cwiseMin(texel[k]);
+        }
+        const int column = static_cast<int>(low.x() / 12), row = static_cast<int>(low.y() / 12);
+        const Vec2 origin(12.0 * column, 12.0 * row);
+        bool lower = true;
+        for (int k = 0; k < 3; ++k) {
+            const Vec2 local = texel[k] - origin;
             // 1.5 texels inside the cell, and 1.5 texels from the diagonal that parts its two faces.
             EXPECT_GE(local.minCoeff(), 1.5 - 1e-9);
             EXPECT_LE(local.maxCoeff(), 12 - 1.5 + 1e-9);
             const double toDiagonal = (local.x() + local.y() - 12.0) / std::sqrt(2.0);
-            if (f % 2 == 0)
-                EXPECT_LE(toDiagonal, -1.5 + 1e-9);
-            else
-                EXPECT_GE(toDiagonal, 1.5 - 1e-9);
+            EXPECT_GE(std::abs(toDiagonal), 1.5 - 1e-9);
+            lower = lower && toDiagonal < 0;
         }
+        EXPECT_TRUE(taken.insert({column, row, lower ? 0 : 1}).second) << "two faces in one half of a cell";
     }
+}
+
+TEST(TextureBake, NeighboursInTheImageAreNeighboursOnTheSurface)
+{
+    // Viewers average neighbouring texels (mipmaps): the two faces of a cell, and the faces of
+    // neighbouring cells, should lie close together on the surface.
+    // The output's faces in a scrambled order (a remesher's numbering need not follow the surface).
+    const TriMesh input = planeGrid(6);
+    TriMesh output = planeGrid(30);
+    std::mt19937 random(7);
+    std::shuffle(output.faces.begin(), output.faces.end(), random);
+    TextureBakeParams params;
+    params.cellSize = 8;
+    const TextureBakeResult baked = bakeTexture(input, planeUv(input), {gradient(64)}, output, params);
+    std::map<std::pair<int, int>, std::vector<Vec3>> cells;  // cell -> its faces' centroids
+    for (int f = 0; f < output.faceCount(); ++f) {
+        const Vec2& uv = baked.texture.uv[3 * f];
+        const int column = static_cast<int>(uv.x() * baked.image.width / 8),
+                  row = static_cast<int>((1.0 - uv.y()) * baked.image.height / 8);
+        const Face& face = output.faces[f];
+        cells[{column, row}].push_back((output.vertices[face[0]] + output.vertices[face[1]] + output.vertices[face[2]]) / 3.0);
+    }
+    double total = 0;
+    int pairs = 0;
+    for (const auto& [at, centroids] : cells) {
+        const auto right = cells.find({at.first + 1, at.second});
+        if (right == cells.end()) continue;
+        total += (centroids[0] - right->second[0]).norm();
+        ++pairs;
+    }
+    ASSERT_GT(pairs, 100);
+    // A face of this grid is 1/30 across; faces placed at random would be about 0.5 apart.
+    EXPECT_LT(total / pairs, 0.15);
 }
 
 TEST(TextureBake, TheSameImageOnOneAndTwoThreads)

@@ -50,8 +50,14 @@ region_out="$work/out/bunny-region.ply"
 run_meshlabserver "$server" "$work/out/log-region.txt" -i "$work/out/bunny.ply" -o "$region_out" -m wt -s "$mlx"
 [ "$MLS_RC" -eq 0 ] || fail "meshlabserver (selection) exited with $MLS_RC"
 grep -q "FCVT region: [1-9][0-9]* piece" "$work/out/log-region.txt" || fail "no region line in the log"
-grep -q "FCVT: texture baked into 'bunny_FCVT_texture.png'" "$work/out/log-region.txt" || fail "selection: no bake in the log"
+# MeshLab 2020.09 writes the baked image beside the input, never over the first run's: there it
+# is bunny_FCVT_texture_2.png (2022.02 and later hold it in the layer: the host saves it by name).
+grep -Eq "FCVT: texture baked into 'bunny_FCVT_texture(_2)?.png'" "$work/out/log-region.txt" || fail "selection: no bake in the log"
 [ "$(grep -ac '^comment TextureFile ' "$region_out")" -eq 2 ] || fail "selection: the output should name two textures"
+if [ -z "${FCVT_MESHLAB_HOST:-}" ]; then
+  grep -aq "^comment TextureFile bunny_FCVT_texture_2.png" "$region_out" || fail "selection: the image should not overwrite the first run's"
+  cmp -s "$work/out/bunny_FCVT_texture.png" "$work/out/bunny_FCVT_texture_2.png" && fail "selection: the same image twice"
+fi
 grep -aq "^comment TextureFile TextureDouble_A.png" "$region_out" || fail "selection: the input's texture is not kept"
 "$cli" texture-compare "$work/out/bunny.ply" "$region_out" --json > "$work/out/compare-region.json"
 python3 - "$work/out/compare-region.json" <<'PY' || fail "the selection's texture differs from the input's"
