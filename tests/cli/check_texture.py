@@ -10,37 +10,11 @@ import math
 import os
 import sys
 
-from fcvt_check import check, finish, run
+from fcvt_check import check, finish, read_obj, run
 
 fcvt, textured, charts, vertices, work = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4], sys.argv[5]
 per_face = sys.argv[6] if len(sys.argv) > 6 else None
 os.makedirs(work, exist_ok=True)
-
-
-def read_obj(path):
-    """(vertices, vt, faces as [(v, vt)] * 3, mtllib names, usemtl count); negative indices resolved."""
-    v, vt, faces, libs, usemtl = [], [], [], [], 0
-    for line in open(path):
-        w = line.split()
-        if not w:
-            continue
-        if w[0] == "v":
-            v.append(tuple(float(x) for x in w[1:4]))
-        elif w[0] == "vt":
-            vt.append(tuple(float(x) for x in w[1:3]))
-        elif w[0] == "mtllib":
-            libs += w[1:]
-        elif w[0] == "usemtl":
-            usemtl += 1
-        elif w[0] == "f":
-            corners = []
-            for c in w[1:]:
-                p = c.split("/")
-                iv = int(p[0]); it = int(p[1]) if len(p) > 1 and p[1] else 0
-                corners.append((iv - 1 if iv > 0 else len(v) + iv, (it - 1 if it > 0 else len(vt) + it) if it else None))
-            for k in range(1, len(corners) - 1):
-                faces.append((corners[0], corners[k], corners[k + 1]))
-    return v, vt, faces, libs, usemtl
 
 
 def stretch(v, vt, face):

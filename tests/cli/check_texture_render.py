@@ -16,7 +16,7 @@ import os
 import shutil
 import sys
 
-from fcvt_check import check, finish, run
+from fcvt_check import check, finish, read_obj, run
 
 fcvt, textured, work = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(work, exist_ok=True)
@@ -113,22 +113,6 @@ for count in (1000, 3000):
     check(r["ratio"] <= 2.0, f"torus-{count}: render difference {r['ratio']:.2f} x the yardstick > 2")
 
 # --region on a textured PLY: the faces above the bunny's middle (y) remeshed, the rest kept.
-def read_obj(path):
-    v, vt, faces = [], [], []
-    for line in open(path):
-        w = line.split()
-        if not w:
-            continue
-        if w[0] == "v":
-            v.append(tuple(float(x) for x in w[1:4]))
-        elif w[0] == "vt":
-            vt.append(tuple(float(x) for x in w[1:3]))
-        elif w[0] == "f":
-            c = [tuple(int(i) for i in x.split("/")[:2]) for x in w[1:4]]
-            faces.append([(a - 1 if a > 0 else len(v) + a, b - 1 if b > 0 else len(vt) + b) for a, b in c])
-    return v, vt, faces
-
-
 def read_ascii_ply_texture(path):
     """(vertices, [(corners, uv per corner, texnumber)], TextureFile names) of fcvt's PLY (binary little endian)."""
     import struct
@@ -179,7 +163,7 @@ def read_ascii_ply_texture(path):
 
 
 bunny = os.path.join(textured, "bunny10k_textured.obj")
-bv, bvt, bfaces = read_obj(bunny)
+bv, bvt, bfaces, _, _ = read_obj(bunny)
 middle = sorted(p[1] for p in bv)[len(bv) // 2]
 region_dir = os.path.join(work, "region")
 os.makedirs(region_dir, exist_ok=True)

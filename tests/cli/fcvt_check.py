@@ -265,3 +265,29 @@ def measure(vertices, faces):
         "boundary_loops": loops,
         "genus_if_connected": (2 - chi - loops) // 2,
     }
+
+
+def read_obj(path):
+    """(vertices, vt, faces as [(v, vt)] * 3, mtllib names, usemtl count); negative indices resolved."""
+    v, vt, faces, libs, usemtl = [], [], [], [], 0
+    for line in open(path):
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "v":
+            v.append(tuple(float(x) for x in w[1:4]))
+        elif w[0] == "vt":
+            vt.append(tuple(float(x) for x in w[1:3]))
+        elif w[0] == "mtllib":
+            libs += w[1:]
+        elif w[0] == "usemtl":
+            usemtl += 1
+        elif w[0] == "f":
+            corners = []
+            for c in w[1:]:
+                p = c.split("/")
+                iv = int(p[0]); it = int(p[1]) if len(p) > 1 and p[1] else 0
+                corners.append((iv - 1 if iv > 0 else len(v) + iv, (it - 1 if it > 0 else len(vt) + it) if it else None))
+            for k in range(1, len(corners) - 1):
+                faces.append((corners[0], corners[k], corners[k + 1]))
+    return v, vt, faces, libs, usemtl
