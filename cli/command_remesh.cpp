@@ -356,7 +356,7 @@ int runRemesh(const std::vector<std::string>& args)
             ".ply IN" +
             (isPlyPath(inPath) ? std::string() : " (" + inPath + " is not a .ply file)"));
     checkOutputPath(outPath, inPath);
-    const TextureMode textureMode = textureModeFromText(a.text("texture").value_or("auto"));
+    const TextureMethod textureMethod = textureMethodFromText(a.text("texture").value_or("auto"));
     if (const auto reportPath = a.text("report")) {
         checkDistinctOutputs(*reportPath, outPath, "output mesh");
         checkWritable(*reportPath, inPath);
@@ -404,7 +404,7 @@ int runRemesh(const std::vector<std::string>& args)
     // After a selection-only run the kept faces keep their own coordinates (faceOrigin).
     const std::vector<int> faceOrigin = region && !regionRun.wholeMesh ? regionRun.faceOrigin : std::vector<int>{};
     const WrittenTexture texture = writeOutputTexture(input, inputTexture, result.mesh, faceOrigin, result.threads, inPath,
-                                                      outPath, textureMode, textureWarnings);
+                                                      outPath, textureMethod, textureWarnings);
     writeOutput(outPath, regionRun, regionProperty, inputAttributes,
                 texture.made.texture.empty() ? nullptr : &texture.made.texture);
     const double writeSeconds = secondsSince(writeStart);

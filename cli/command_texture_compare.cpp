@@ -14,9 +14,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <algorithm>
-#include <cmath>
-#include <filesystem>
 #include <string>
 
 namespace fieldcvt::cli {
@@ -60,25 +57,19 @@ TexturedMesh readTextured(const std::string& path)
     if (t.texture.empty()) throw Error(path + ": no texture coordinates");
     std::vector<std::string> warnings;
     lookUpMaterialImages(t.texture, path, warnings);
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    for (const TextureMaterial& m : t.texture.materials) {
-        if (m.image.empty()) throw Error(path + ": material '" + m.name + "' names no texture image");
-        t.images.push_back(readImage((folder / m.image).string()));
-    }
+    t.images = readMaterialImages(t.texture, path);
     return t;
 }
 
-//! The renders of one row side by side, `row` of `rows`, into `sheet`.
+//! A render into column `column`, row `row` of `sheet` (white where it covers nothing).
 void paste(TextureImage& sheet, const TextureRender& render, int column, int row)
 {
     for (int y = 0; y < render.size; ++y)
         for (int x = 0; x < render.size; ++x) {
             const std::size_t from = static_cast<std::size_t>(y) * render.size + x;
-            const std::size_t to =
-                3 * ((static_cast<std::size_t>(row) * render.size + y) * sheet.width + column * render.size + x);
-            const Eigen::Vector3f c = render.covered[from] ? render.colour[from] : Eigen::Vector3f::Constant(255.0f);
-            for (int k = 0; k < 3; ++k)
-                sheet.rgb[to + k] = static_cast<std::uint8_t>(std::lround(std::clamp(c[k], 0.0f, 255.0f)));
+            const Eigen::Vector3d colour =
+                render.covered[from] ? Eigen::Vector3d(render.colour[from].cast<double>()) : Eigen::Vector3d::Constant(255);
+            sheet.set(column * render.size + x, row * render.size + y, colour);
         }
 }
 

@@ -4,6 +4,7 @@
 #include "errors.h"
 
 #include <cstdlib>
+#include <filesystem>
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
@@ -26,6 +27,17 @@ TextureImage readImage(const std::string& path)
     image.rgb.assign(pixels, pixels + 3 * static_cast<std::size_t>(width) * height);
     stbi_image_free(pixels);
     return image;
+}
+
+std::vector<TextureImage> readMaterialImages(const MeshTexture& texture, const std::string& meshPath)
+{
+    const std::filesystem::path folder = std::filesystem::path(meshPath).parent_path();
+    std::vector<TextureImage> images;
+    for (const TextureMaterial& m : texture.materials) {
+        if (m.image.empty()) throw Error(meshPath + ": material '" + m.name + "' names no texture image");
+        images.push_back(readImage((folder / m.image).string()));
+    }
+    return images;
 }
 
 void writePng(const std::string& path, const TextureImage& image)

@@ -17,11 +17,11 @@ namespace fieldcvt::cli {
 
 namespace fs = std::filesystem;
 
-TextureMode textureModeFromText(const std::string& text)
+TextureMethod textureMethodFromText(const std::string& text)
 {
-    if (text == "auto") return TextureMode::Auto;
-    if (text == "keep") return TextureMode::Keep;
-    if (text == "bake") return TextureMode::Bake;
+    if (text == "auto") return TextureMethod::Auto;
+    if (text == "keep") return TextureMethod::Keep;
+    if (text == "bake") return TextureMethod::Bake;
     throw UsageError("--texture must be auto, keep or bake (got '" + text + "')");
 }
 
@@ -32,27 +32,6 @@ std::string percentText(double share)
     char text[32];
     std::snprintf(text, sizeof text, "%.2f %%", 100 * share);
     return text;
-}
-
-//! The input's images, one per material; empty when one cannot be read (a warning then: only
-//! if a bake is wanted does it matter, and makeOutputTexture says so).
-std::vector<TextureImage> inputImages(const MeshTexture& texture, const std::string& inPath, std::vector<std::string>& problems)
-{
-    std::vector<TextureImage> images;
-    const fs::path folder = fs::path(inPath).parent_path();
-    for (const TextureMaterial& m : texture.materials) {
-        if (m.image.empty()) {
-            problems.push_back(inPath + ": material '" + m.name + "' names no image");
-            return {};
-        }
-        try {
-            images.push_back(readImage((folder / m.image).string()));
-        } catch (const Error& e) {
-            problems.push_back(e.what());
-            return {};
-        }
-    }
-    return images;
 }
 
 //! The new image's file: OUT's name with "_texture.png", beside it.
@@ -66,7 +45,7 @@ fs::path bakedImagePath(const std::string& outPath)
 
 WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
                                   const std::vector<int>& faceOrigin, int threads, const std::string& inPath,
-                                  const std::string& outPath, TextureMode mode, std::vector<std::string>& warnings)
+                                  const std::string& outPath, TextureMethod method, std::vector<std::string>& warnings)
 {
     WrittenTexture result;
     if (inputTexture.empty()) return result;
@@ -78,19 +57,22 @@ WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& input
     MeshTexture withImages = inputTexture;  // the materials' images looked up in the .mtl files
     lookUpMaterialImages(withImages, inPath, warnings);
     OutputTextureParams params;
-    params.method = mode == TextureMode::Keep   ? TextureMethod::Keep
-                    : mode == TextureMode::Bake ? TextureMethod::Bake
-                                                : TextureMethod::Auto;
+    params.method = method;
     params.threads = threads;
     // Keeping the atlas never needs the images; a bake without them keeps it, with a warning.
-    std::vector<std::string> imageProblems;
-    const std::vector<TextureImage> images =
-        mode == TextureMode::Keep ? std::vector<TextureImage>{} : inputImages(withImages, inPath, imageProblems);
+    std::vector<TextureImage> images;
+    std::string imageProblem;
+    try {
+        if (method != TextureMethod::Keep) images = readMaterialImages(withImages, inPath);
+    } catch (const Error& e) {
+        imageProblem = e.what();
+    }
     result.made = makeOutputTexture(input, withImages, images, output, faceOrigin, params);
     if (result.made.tooManyFacesToBake)
-        warnings.push_back("too many faces to bake a texture within 4096 x 4096 texels: the input's atlas is kept");
+        warnings.push_back("too many faces to bake a texture within " + std::to_string(params.bakeMaxSize) + " x " +
+                           std::to_string(params.bakeMaxSize) + " texels: the input's atlas is kept");
     else if (result.made.bakeImpossible)
-        for (const std::string& problem : imageProblems) warnings.push_back(problem + ": no texture to bake, the atlas is kept");
+        warnings.push_back(imageProblem + ": no texture to bake, the atlas is kept");
     MeshTexture& texture = result.made.texture;
     if (result.made.baked) {
         const fs::path imagePath = bakedImagePath(outPath);

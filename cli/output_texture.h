@@ -12,10 +12,8 @@
 
 namespace fieldcvt::cli {
 
-enum class TextureMode { Auto, Keep, Bake };
-
 //! "auto", "keep" or "bake" (a UsageError otherwise).
-TextureMode textureModeFromText(const std::string& text);
+TextureMethod textureMethodFromText(const std::string& text);
 
 //! The output's texture (core/texture_output.h) with its files in place.
 struct WrittenTexture {
@@ -29,7 +27,7 @@ struct WrittenTexture {
 //! warnings when it cannot be made as asked (no image to bake from: the atlas kept).
 WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
                                   const std::vector<int>& faceOrigin, int threads, const std::string& inPath,
-                                  const std::string& outPath, TextureMode mode, std::vector<std::string>& warnings);
+                                  const std::string& outPath, TextureMethod method, std::vector<std::string>& warnings);
 
 //! The information line on the texture (empty without one).
 std::string textureNote(const WrittenTexture& texture);

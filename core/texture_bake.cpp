@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <utility>
+#include <memory>
 
 namespace fieldcvt {
 
@@ -40,14 +40,6 @@ struct Layout {
     std::vector<std::array<int, 2>> cellAt;
 };
 
-//! Interleaves the bits of x and y (a 2D Morton code).
-std::uint64_t interleave(std::uint32_t x, std::uint32_t y)
-{
-    std::uint64_t code = 0;
-    for (int b = 0; b < 32; ++b) code |= (std::uint64_t((x >> b) & 1) << (2 * b)) | (std::uint64_t((y >> b) & 1) << (2 * b + 1));
-    return code;
-}
-
 Layout cellLayout(const TriMesh& output, int columns, int rows)
 {
     Layout layout;
@@ -56,13 +48,13 @@ Layout cellLayout(const TriMesh& output, int columns, int rows)
     for (const Face& f : output.faces)
         centroids.push_back((output.vertices[f[0]] + output.vertices[f[1]] + output.vertices[f[2]]) / 3.0);
     layout.faceOfSlot = mortonIndexOrder(centroids);
-    std::vector<std::pair<std::uint64_t, std::array<int, 2>>> grid;
+    std::vector<Vec3> grid;  // the cells' places, in the plane
     grid.reserve(static_cast<std::size_t>(columns) * rows);
     for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < columns; ++c) grid.push_back({interleave(std::uint32_t(c), std::uint32_t(r)), {c, r}});
-    std::sort(grid.begin(), grid.end());
+        for (int c = 0; c < columns; ++c) grid.emplace_back(c, r, 0.0);
+    const std::vector<int> order = mortonIndexOrder(grid);
     const std::size_t cells = (output.faces.size() + 1) / 2;
-    for (std::size_t i = 0; i < cells; ++i) layout.cellAt.push_back(grid[i].second);
+    for (std::size_t i = 0; i < cells; ++i) layout.cellAt.push_back({order[i] % columns, order[i] / columns});
     return layout;
 }
 
@@ -104,7 +96,7 @@ int bakeCellSize(const TriMesh& input, const MeshTexture& inputTexture, const st
 }
 
 TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputTexture, const std::vector<TextureImage>& inputImages,
-                              const TriMesh& output, const TextureBakeParams& params)
+                              const TriMesh& output, const TextureBakeParams& params, const ClosestPointTree* inputTree)
 {
     TextureBakeResult result;
     const int cell = bakeCellSize(input, inputTexture, inputImages, output, params);
@@ -136,7 +128,9 @@ TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputText
     }
     if (output.faces.empty()) return result;
 
-    const ClosestPointTree tree(input);
+    std::unique_ptr<const ClosestPointTree> ownTree;
+    if (!inputTree) ownTree = std::make_unique<const ClosestPointTree>(input);
+    const ClosestPointTree& tree = inputTree ? *inputTree : *ownTree;
     const int threads = openMpThreads(params.threads);
     const long long cells = (static_cast<long long>(output.faces.size()) + 1) / 2;
     // Each cell writes only its own texels: the same image on any thread count.
@@ -159,9 +153,7 @@ TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputText
                 hint[slot] = cp.face;
                 const Vec3 colour = inputColour(inputTexture, inputImages, cp);
                 const std::array<int, 2>& at = layout.cellAt[static_cast<std::size_t>(c)];
-                const std::size_t i = 3 * ((static_cast<std::size_t>(at[1]) * cell + y) * image.width + at[0] * cell + x);
-                for (int k = 0; k < 3; ++k)
-                    image.rgb[i + k] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[k], 0.0, 255.0)));
+                image.set(at[0] * cell + x, at[1] * cell + y, colour);
             }
     }
     return result;

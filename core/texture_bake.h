@@ -11,6 +11,8 @@
 
 namespace fieldcvt {
 
+class ClosestPointTree;
+
 //! Above this share of output faces across a seam when the input's atlas is kept
 //! (TextureTransferResult::continuedShare), a new texture is baked by default: the input's charts
 //! are small against the output's faces (on bunny10k_textured at 5 000 vertices, 19 % of the
@@ -47,8 +49,10 @@ struct TextureBakeResult {
 //! of its half, at the texel centre's closest point in that face), the margins included.
 //! `inputImages` has one image per material of `inputTexture` (an empty one reads mid-grey);
 //! `inputTexture` must fit `input` (textureProblem is empty).
+//! `inputTree`: closest-point queries on `input` when the caller has them (else built here).
 TextureBakeResult bakeTexture(const TriMesh& input, const MeshTexture& inputTexture, const std::vector<TextureImage>& inputImages,
-                              const TriMesh& output, const TextureBakeParams& params = {});
+                              const TriMesh& output, const TextureBakeParams& params = {},
+                              const ClosestPointTree* inputTree = nullptr);
 
 //! The cell side bakeTexture chooses for these meshes and parameters (cellSize 0).
 int bakeCellSize(const TriMesh& input, const MeshTexture& inputTexture, const std::vector<TextureImage>& inputImages,

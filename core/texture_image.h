@@ -3,6 +3,7 @@
 // and fills. Reading and writing image files is the front ends' job (io/image_io.h, QImage).
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -23,6 +24,13 @@ struct TextureImage {
     {
         const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x);
         return {double(rgb[i]), double(rgb[i + 1]), double(rgb[i + 2])};
+    }
+
+    //! Sets pixel (x, y) to `colour` (0 .. 255 per channel), rounded and clamped to that range.
+    void set(int x, int y, const Eigen::Vector3d& colour)
+    {
+        const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x);
+        for (int k = 0; k < 3; ++k) rgb[i + k] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[k], 0.0, 255.0)));
     }
 
     //! The colour at (u, v), bilinear between the four nearest pixel centres (0 .. 255 each).

@@ -1,6 +1,8 @@
 // Keep or bake, over the new faces of a run (all faces without a selection).
 #include "texture_output.h"
 
+#include "closest_point.h"
+
 namespace fieldcvt {
 
 namespace {
@@ -37,9 +39,10 @@ OutputTexture makeOutputTexture(const TriMesh& input, const MeshTexture& inputTe
     OutputTexture result;
     std::vector<int> newFaces;
     const TriMesh part = newFacesOf(output, faceOrigin, newFaces);
+    const ClosestPointTree inputTree(input);  // one for the transfer and the bake
     TextureTransferParams transferParams;
     transferParams.threads = params.threads;
-    TextureTransferResult kept = transferTexture(input, inputTexture, part, transferParams);
+    TextureTransferResult kept = transferTexture(input, inputTexture, part, transferParams, &inputTree);
     result.charts = kept.charts;
     result.continuedFaces = kept.continuedFaces;
     result.continuedShare = kept.continuedShare;
@@ -49,14 +52,15 @@ OutputTexture makeOutputTexture(const TriMesh& input, const MeshTexture& inputTe
     TextureBakeParams bakeParams;
     bakeParams.threads = params.threads;
     bakeParams.maxSize = params.bakeMaxSize;
-    result.tooManyFacesToBake = wantBake && bakeCellSize(input, inputTexture, inputImages, part, bakeParams) < kMinBakeCell;
+    if (wantBake) bakeParams.cellSize = bakeCellSize(input, inputTexture, inputImages, part, bakeParams);  // chosen once
+    result.tooManyFacesToBake = wantBake && bakeParams.cellSize < kMinBakeCell;
     result.bakeImpossible = wantBake && (inputImages.size() != inputTexture.materials.size() || result.tooManyFacesToBake);
     MeshTexture& texture = result.texture;
     texture.materials = inputTexture.materials;
     texture.libraries = inputTexture.libraries;
     MeshTexture partTexture;
     if (wantBake && !result.bakeImpossible) {
-        TextureBakeResult baked = bakeTexture(input, inputTexture, inputImages, part, bakeParams);
+        TextureBakeResult baked = bakeTexture(input, inputTexture, inputImages, part, bakeParams, &inputTree);
         partTexture = std::move(baked.texture);
         result.baked = true;
         result.bakedImage = std::move(baked.image);

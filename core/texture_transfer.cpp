@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <tuple>
 
 namespace fieldcvt {
@@ -113,11 +114,13 @@ std::vector<int> textureCharts(const TriMesh& mesh, const MeshTexture& texture, 
 }
 
 TextureTransferResult transferTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
-                                      const TextureTransferParams& params)
+                                      const TextureTransferParams& params, const ClosestPointTree* inputTree)
 {
     TextureTransferResult result;
     const std::vector<int> chart = textureCharts(input, inputTexture, params.uvTolerance, &result.charts);
-    const ClosestPointTree tree(input);
+    std::unique_ptr<const ClosestPointTree> ownTree;
+    if (!inputTree) ownTree = std::make_unique<const ClosestPointTree>(input);
+    const ClosestPointTree& tree = inputTree ? *inputTree : *ownTree;
     const int threads = openMpThreads(params.threads);
     // Each query is independent and written to its own slot: the same result on any thread count.
     std::vector<ClosestPoint> atVertex(output.vertices.size());

@@ -9,6 +9,8 @@
 
 namespace fieldcvt {
 
+class ClosestPointTree;
+
 struct TextureTransferParams {
     //! Two corners of a shared edge have "the same" coordinates when they differ by at most this
     //! in each of u and v (default 0: equal, as two `f v/vt` corners naming one `vt` are).
@@ -36,7 +38,8 @@ std::vector<int> textureCharts(const TriMesh& mesh, const MeshTexture& texture, 
 //! face's size there (a seam inside the chart); any other corner is continued with f*'s affine
 //! map (its barycentric coordinates in f*'s plane, unbounded, applied to f*'s coordinates). The
 //! face's material is f*'s. `inputTexture` must fit `input` (textureProblem is empty).
+//! `inputTree`: closest-point queries on `input` when the caller has them (else built here).
 TextureTransferResult transferTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
-                                      const TextureTransferParams& params = {});
+                                      const TextureTransferParams& params = {}, const ClosestPointTree* inputTree = nullptr);
 
 }  // namespace fieldcvt

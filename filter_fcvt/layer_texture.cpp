@@ -136,9 +136,10 @@ QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& ou
                               .arg(made.charts)
                               .arg(made.continuedFaces)
                               .arg(100.0 * made.continuedShare, 0, 'f', 2);
-    QString bakeProblem = made.tooManyFacesToBake ? "too many faces for a texture of 4096 x 4096 texels"
-                          : made.bakeImpossible   ? "the input's texture images cannot be read"
-                                                  : QString();
+    QString bakeProblem = made.tooManyFacesToBake
+                              ? QString("too many faces for a texture of %1 x %1 texels").arg(params.bakeMaxSize)
+                          : made.bakeImpossible ? "the input's texture images cannot be read"
+                                                : QString();
     if (made.baked) {
         std::string name = output.label().toStdString() + "_texture.png";
         bakeProblem = storeBakedImage(input, made.bakedMaterial > 0, toQImage(made.bakedImage), name, output);
