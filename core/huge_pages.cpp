@@ -85,8 +85,11 @@ long long adviseNewHugePages()
 bool releaseFreeMemory(std::size_t atLeast)
 {
 #if defined(__GLIBC__)
-    if (mallinfo2().fordblks < atLeast) return false;
-    return malloc_trim(0) != 0;
+    // Free memory inside the heap, not the room kept at its top (keepcost: HugePageHeap's 64 MiB
+    // pad, already marked for huge pages); malloc_trim keeps that room as it is.
+    const struct mallinfo2 info = mallinfo2();
+    if (info.fordblks - std::min(info.fordblks, info.keepcost) < atLeast) return false;
+    return malloc_trim(info.keepcost) != 0;
 #else
     (void)atLeast;
     return false;

@@ -26,7 +26,7 @@ long long adviseHugePages();
 long long adviseNewHugePages();
 
 //! Gives the free memory inside malloc's heap back to the system when it holds at least `atLeast`
-//! bytes free (glibc's mallinfo2 and malloc_trim; nothing elsewhere): blocks under the 32 MiB
+//! bytes free below its top (the room kept at the top stays: HugePageHeap's pad, marked) (glibc's mallinfo2 and malloc_trim; nothing elsewhere): blocks under the 32 MiB
 //! mapping threshold (HugePageHeap) that a stage freed would otherwise stay resident while the
 //! next stages allocate more (nefertiti subdivided twice to 100 000 vertices: peak resident
 //! memory 886 MB before, 600 MB with this and EnergyFunction::releaseDiagram). remesh() calls it before each stage. Returns whether it trimmed.
