@@ -1,5 +1,6 @@
 // The seam of a remeshed region (region.h): its border put exactly on the region's own border
 // vertices, so that the new faces meet the kept ones edge to edge.
+#include "mesh_edges.h"
 #include "region.h"
 #include "triangle_shape.h"
 
@@ -25,16 +26,21 @@ std::unordered_map<std::uint64_t, int> directedEdges(const std::vector<Face>& fa
     return edges;
 }
 
-//! The border half-edges a -> b of `faces`: no face has b -> a and one face has a -> b.
+//! The border half-edges a -> b of `faces`, in half-edge order: no face has b -> a and one face
+//! has a -> b. Through the edge table (a counting sort), not a hash map of directed edges: this
+//! runs on whole inputs (hole closing), millions of faces.
 std::vector<std::pair<int, int>> borderHalfEdges(const std::vector<Face>& faces)
 {
-    const auto edges = directedEdges(faces);
+    int vertexCount = 0;
+    for (const Face& f : faces) vertexCount = std::max({vertexCount, f[0] + 1, f[1] + 1, f[2] + 1});
+    const EdgeTable edges = buildEdgeTable(faces, vertexCount);
     std::vector<std::pair<int, int>> out;
-    for (const Face& f : faces)
-        for (int k = 0; k < 3; ++k) {
-            const int a = f[k], b = f[(k + 1) % 3];
-            if (edges.at(edgeKey(a, b)) == 1 && edges.find(edgeKey(b, a)) == edges.end()) out.push_back({a, b});
-        }
+    for (int h = 0; h < 3 * static_cast<int>(faces.size()); ++h) {
+        const int a = halfEdgeOrigin(faces, h), b = faces[size_t(h / 3)][size_t((h % 3 + 1) % 3)];
+        const int e = edges.halfEdgeEdge[size_t(h)];
+        if (a == b || edges.faceCount(e) != 1) continue;  // one half-edge on the edge: h itself
+        out.push_back({a, b});
+    }
     return out;
 }
 

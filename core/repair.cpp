@@ -211,36 +211,50 @@ std::vector<Face> weldVertices(const TriMesh& input, std::vector<Vec3>& pos, con
     return faces;
 }
 
-//! Step 2: degenerate, duplicate and opposite faces removed.
+//! Step 2: degenerate, duplicate and opposite faces removed. A face whose corner set an earlier
+//! face has is dropped: found by sorting (corner set, face) pairs, not a hash map of millions of
+//! triples; the first face of each set is kept, the rest compared with it.
 void removeBadFaces(const std::vector<Vec3>& pos, std::vector<Face>& faces, RepairReport& report)
 {
-    {
-        std::vector<Face> kept;
-        kept.reserve(faces.size());
-        std::unordered_map<std::array<int, 3>, int, TripleHash> seen;
-        seen.reserve(faces.size());
-        for (const Face& t : faces) {
-            if (degenerate(pos, t)) {
-                ++report.removedDegenerateFaces;
-                continue;
-            }
-            std::array<int, 3> key = t;
-            std::sort(key.begin(), key.end());
-            const auto [it, added] = seen.emplace(key, static_cast<int>(kept.size()));
-            if (added) {
-                kept.push_back(t);
-                continue;
-            }
-            // Same cyclic order as the kept face: a duplicate; otherwise its opposite.
-            const Face& other = kept[it->second];
-            const int k = cornerOf(other, t[0]);
-            if (other[(k + 1) % 3] == t[1])
-                ++report.removedDuplicateFaces;
-            else
-                ++report.removedOppositeFaces;
+    struct Keyed {
+        std::array<int, 3> corners;  // sorted
+        int face;
+        bool operator<(const Keyed& o) const { return corners != o.corners ? corners < o.corners : face < o.face; }
+    };
+    std::vector<Keyed> keyed;
+    keyed.reserve(faces.size());
+    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+        if (degenerate(pos, faces[f])) {
+            ++report.removedDegenerateFaces;
+            continue;
         }
-        faces.swap(kept);
+        Keyed k{faces[f], f};
+        std::sort(k.corners.begin(), k.corners.end());
+        keyed.push_back(k);
     }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<char> keep(faces.size(), 0);
+    size_t first = 0;  // the first entry of the current corner set: its earliest face
+    for (size_t i = 0; i < keyed.size(); ++i) {
+        if (i == 0 || keyed[i].corners != keyed[i - 1].corners) {
+            first = i;
+            keep[size_t(keyed[i].face)] = 1;
+            continue;
+        }
+        // Same cyclic order as the kept face: a duplicate; otherwise its opposite.
+        const Face& other = faces[size_t(keyed[first].face)];
+        const Face& t = faces[size_t(keyed[i].face)];
+        const int k = cornerOf(other, t[0]);
+        if (other[(k + 1) % 3] == t[1])
+            ++report.removedDuplicateFaces;
+        else
+            ++report.removedOppositeFaces;
+    }
+    std::vector<Face> kept;
+    kept.reserve(keyed.size());
+    for (size_t f = 0; f < faces.size(); ++f)
+        if (keep[f]) kept.push_back(faces[f]);
+    faces.swap(kept);
 }
 
 //! Step 3: which face continues which across each edge (partner[h]: the half-edge glued to h);
