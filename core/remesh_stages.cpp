@@ -272,7 +272,9 @@ void chooseOptimisationSurface(RemeshRun& run)
             // for inputs over kMaxEarlyTreeFaces faces, whose tree would add to the optimisation's
             // peak memory (about 110 bytes a face).
             constexpr int kMaxEarlyTreeFaces = 500000;
-            const bool early = run.surface.faceCount() <= kMaxEarlyTreeFaces;
+            // Nor beside a simplification in blocks, which has every thread.
+            const bool early =
+                run.surface.faceCount() <= kMaxEarlyTreeFaces && simplifyBlockCount(run.surface.faceCount(), simplify) == 1;
             // The simplification on the main thread (whose heap keeps the CLI's padding).
             sideBySide(
                 early, [&] { run.coarse = simplifyMesh(run.surface, simplify); },

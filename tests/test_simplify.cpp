@@ -10,6 +10,7 @@
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <set>
@@ -123,6 +124,86 @@ TEST(Simplify, DeterministicAndCheckedParameters)
     params.locked.clear();
     params.targetFaces = -1;
     EXPECT_THROW(simplifyMesh(torus, params), InvalidInputError);
+}
+
+// Large inputs are simplified in blocks first (in parallel), then in one pass over the merged
+// blocks: the same kind of surface as one pass (manifold, close, no slivers, as even), the
+// border and the locked vertices kept, and the same result on any thread count.
+TEST(Simplify, BlocksGiveTheSameSurfaceAsOnePass)
+{
+    const TriMesh sphere = testmesh::icosphere(6);  // 81 920 faces
+    SimplifyParams params;
+    params.targetFaces = 4000;
+    params.maxError = 0.01;
+    params.blockFaces = 10000;
+    // Blocks whose share of the target is small against their frontier band: one pass.
+    ASSERT_EQ(simplifyBlockCount(sphere.faceCount(), params), 1);
+    params.targetFaces = 10000;
+    params.blockFaces = 20000;
+    ASSERT_EQ(simplifyBlockCount(sphere.faceCount(), params), 4);
+    const SimplifyResult blocks = simplifyMesh(sphere, params);
+    EXPECT_LE(blocks.mesh.faceCount(), 10002);
+    EXPECT_GE(blocks.mesh.faceCount(), 9800);
+    const TopologySummary topology = computeTopology(blocks.mesh);
+    EXPECT_TRUE(topology.manifold());
+    EXPECT_EQ(topology.genus, 0);
+    EXPECT_EQ(topology.components, 1);
+    EXPECT_EQ(topology.boundaryLoops, 0);
+    ASSERT_EQ(blocks.inputVertex.size(), blocks.mesh.vertices.size());
+    for (size_t v = 0; v < blocks.inputVertex.size(); ++v) {
+        EXPECT_EQ(blocks.mesh.vertices[v], sphere.vertices[size_t(blocks.inputVertex[v])]);
+        EXPECT_EQ(blocks.coarseVertex[size_t(blocks.inputVertex[v])], int(v));
+    }
+    EXPECT_LT(largestDeviation(blocks.mesh, sphere), 0.01 * 1.5);
+    params.blockFaces = 0;
+    ASSERT_EQ(simplifyBlockCount(sphere.faceCount(), params), 1);
+    const SimplifyResult onePass = simplifyMesh(sphere, params);
+    // The frontier bands are coarsened by the last pass: the blocks' surface as even as one
+    // pass's (0.694 against 0.695).
+    const QualityMetrics a = computeQuality(blocks.mesh), b = computeQuality(onePass.mesh);
+    EXPECT_GT(a.qMin, 0.15);
+    EXPECT_GT(a.qAvg, b.qAvg - 0.01);
+    double longest = 0, longestOnePass = 0, shortest = 1e300;
+    for (const TriMesh* m : {&blocks.mesh, &onePass.mesh})
+        for (const Face& t : m->faces)
+            for (int k = 0; k < 3; ++k) {
+                const double l = (m->vertices[size_t(t[k])] - m->vertices[size_t(t[(k + 1) % 3])]).norm();
+                (m == &blocks.mesh ? longest : longestOnePass) = std::max(m == &blocks.mesh ? longest : longestOnePass, l);
+                if (m == &blocks.mesh) shortest = std::min(shortest, l);
+            }
+    EXPECT_GT(shortest, 0.1 * longestOnePass);  // no band left at the input's resolution
+    EXPECT_LT(longest, 1.5 * longestOnePass);
+}
+
+TEST(Simplify, BlocksKeepBorderAndLockedVerticesWhateverTheThreads)
+{
+    const TriMesh grid = testmesh::planeGrid(120);  // 28 800 faces, flat
+    SimplifyParams params;
+    params.targetFaces = 10000;
+    params.maxError = 0.01;
+    params.blockFaces = 7000;
+    ASSERT_EQ(simplifyBlockCount(grid.faceCount(), params), 4);
+    params.locked.assign(grid.vertices.size(), 0);
+    const int lockedVertex = 60 * 121 + 60;  // the centre: on the frontier of the Morton blocks
+    params.locked[lockedVertex] = 1;
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const SimplifyResult one = simplifyMesh(grid, params);
+    omp_set_num_threads(3);
+    const SimplifyResult three = simplifyMesh(grid, params);
+    omp_set_num_threads(saved);
+    EXPECT_EQ(one.mesh.faces, three.mesh.faces);
+    EXPECT_EQ(one.inputVertex, three.inputVertex);
+    EXPECT_LE(one.mesh.faceCount(), 10002);
+    EXPECT_GE(one.coarseVertex[lockedVertex], 0);
+    EXPECT_EQ(borderEdges(one.mesh, one.inputVertex), borderEdges(grid, {}));
+    EXPECT_NEAR(surfaceArea(one.mesh), surfaceArea(grid), 1e-9);
+    const TopologySummary topology = computeTopology(one.mesh);
+    EXPECT_TRUE(topology.manifold());
+    EXPECT_EQ(topology.boundaryLoops, 1);
+    EXPECT_GT(computeQuality(one.mesh).qMin, 0.15);
+    params.blockFaces = -1;
+    EXPECT_THROW(simplifyMesh(grid, params), InvalidInputError);
 }
 
 // remesh() on a dense input optimises on the coarse copy and puts the result back on the input:
