@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "interpolation.h"
+#include "morton_order.h"
 
 #include <cmath>
 #include <complex>

@@ -77,10 +77,6 @@ struct RvdResult {
     double totalEnergy() const;
 };
 
-//! Indices of `points` sorted along a Morton (Z-order) curve over their bounding box:
-//! consecutive entries are close in space (for cache-friendly passes over points).
-std::vector<int> mortonIndexOrder(const std::vector<Vec3>& points);
-
 //! Computes the RVD of varying seed sets on one fixed surface. The surface must outlive it.
 //! compute() is parallel over triangles (OpenMP); its result does not depend on the thread
 //! count (fixed chunks, reduction in chunk order).

@@ -3,7 +3,7 @@
 #include "editable_mesh.h"
 #include "errors.h"
 #include "mesh_edges.h"
-#include "rvd.h"
+#include "morton_order.h"
 #include "triangle_shape.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 #include "texture_bake.h"
 
 #include "closest_point.h"
-#include "rvd.h"
+#include "morton_order.h"
 #include "thread_budget.h"
 
 #include <algorithm>
