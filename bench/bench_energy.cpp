@@ -388,6 +388,22 @@ void BM_SimplifyBunny5000(benchmark::State& state)
 }
 BENCHMARK(BM_SimplifyBunny5000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The simplification of a dense surface (bunny.obj subdivided once, 279 000 faces, to a sixteenth
+// of them), 2 threads: Arg 0 one pass; Arg 1 in 6 blocks in parallel, then one pass over the
+// merged blocks (what inputs of 500 000 faces or more get by default).
+void BM_SimplifyDense(benchmark::State& state)
+{
+    const DenseSetup& setup = dense();
+    omp_set_num_threads(2);
+    SimplifyParams params;
+    params.targetFaces = setup.surface.faceCount() / 16;
+    params.maxError = 0.05;
+    params.blockFaces = state.range(0) ? setup.surface.faceCount() / 6 : 0;
+    for (auto _ : state) benchmark::DoNotOptimize(simplifyMesh(setup.surface, params).mesh.faces.size());
+    state.counters["blocks"] = simplifyBlockCount(setup.surface.faceCount(), params);
+}
+BENCHMARK(BM_SimplifyDense)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The border relaxation's diagram on mask.off (an open surface) at 4000 samples, 2 threads:
 // Arg 0 every face clipped (as when it also moved the free samples), 1 only the faces along
 // the border (RvdOptions::borderFacesOnly: the same border lengths and moments).
