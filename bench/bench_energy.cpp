@@ -3,6 +3,7 @@
 // Compare medians, and thread counts within one run: the machine is shared and noisy.
 #include "energy.h"
 #include "mesh_check.h"
+#include "mesh_edges.h"
 #include "mesh_io.h"
 #include "optimize.h"
 #include "rdt.h"
@@ -387,6 +388,17 @@ void BM_SimplifyBunny5000(benchmark::State& state)
     for (auto _ : state) benchmark::DoNotOptimize(simplifyMesh(setup.surface, params).mesh.faces.size());
 }
 BENCHMARK(BM_SimplifyBunny5000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The edge table (mesh_edges.h) of bunny.obj (70 000 faces) and of it subdivided once (279 000),
+// on 1 and 2 threads: every stage builds one, most of them on the input.
+void BM_EdgeTable(benchmark::State& state)
+{
+    const TriMesh& mesh = state.range(0) ? dense().surface : bunny5000().surface;
+    omp_set_num_threads(static_cast<int>(state.range(1)));
+    for (auto _ : state) benchmark::DoNotOptimize(buildEdgeTable(mesh).edgeCount());
+    state.counters["faces"] = mesh.faceCount();
+}
+BENCHMARK(BM_EdgeTable)->Args({0, 1})->Args({0, 2})->Args({1, 1})->Args({1, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The simplification of a dense surface (bunny.obj subdivided once, 279 000 faces, to a sixteenth
 // of them), 2 threads: Arg 0 one pass; Arg 1 in 6 blocks in parallel, then one pass over the

@@ -28,6 +28,15 @@ int EdgeTable::firstHalfEdgeFrom(const std::vector<Face>& faces, int e, int orig
     return -1;
 }
 
+namespace {
+
+//! Half-edges from which the buckets are sorted and filled on threads (the counting pass stays
+//! serial): `fcvt_bench --benchmark_filter=EdgeTable`, medians of 5, 1 -> 2 threads: bunny.obj
+//! (208 000 half-edges) 2.74 -> 2.32 ms, subdivided once (833 000) 8.83 -> 6.95 ms.
+constexpr size_t kMinEntriesForThreads = 200000;
+
+}  // namespace
+
 EdgeTable buildEdgeTable(const std::vector<Face>& faces, int vertexCount, RepeatedVertexFaces repeated)
 {
     const int faceCount = static_cast<int>(faces.size());
@@ -63,25 +72,41 @@ EdgeTable buildEdgeTable(const std::vector<Face>& faces, int vertexCount, Repeat
         }
     }
 
+    // Per bucket (smaller vertex): sorted, then its edges counted; the edges' numbers are the
+    // prefix sums of the counts, so the buckets fill their parts of the table independently.
+    // Threads over buckets only on big meshes; the table is the same on any thread count.
     EdgeTable table;
     table.halfEdgeEdge.assign(3 * static_cast<size_t>(faceCount), -1);
     table.halfEdges.resize(entries.size());
-    table.ends.reserve(entries.size() / 2 + 1);  // about two half-edges an edge on a closed mesh
-    table.first.reserve(entries.size() / 2 + 2);
+    std::vector<int> edgeStart(static_cast<size_t>(vertexCount) + 1, 0);
+    const bool threads = entries.size() >= kMinEntriesForThreads;
+#pragma omp parallel for schedule(dynamic, 4096) if (threads)
     for (int lo = 0; lo < vertexCount; ++lo) {
         const auto begin = entries.begin() + bucketStart[lo], end = entries.begin() + bucketStart[lo + 1];
         std::sort(begin, end);
+        int edges = 0;
+        for (auto it = begin; it != end; ++it) edges += it == begin || (*(it - 1) >> 32) != (*it >> 32);
+        edgeStart[lo + 1] = edges;
+    }
+    for (int v = 0; v < vertexCount; ++v) edgeStart[v + 1] += edgeStart[v];
+    table.ends.resize(edgeStart[vertexCount]);
+    table.first.resize(edgeStart[vertexCount] + size_t(1));
+#pragma omp parallel for schedule(dynamic, 4096) if (threads)
+    for (int lo = 0; lo < vertexCount; ++lo) {
+        const auto begin = entries.begin() + bucketStart[lo], end = entries.begin() + bucketStart[lo + 1];
+        int edge = edgeStart[lo] - 1;
         for (auto it = begin; it != end; ++it) {
             const int hi = static_cast<int>(*it >> 32), h = static_cast<int>(*it & 0xffffffffu);
             if (it == begin || (*(it - 1) >> 32) != (*it >> 32)) {
-                table.first.push_back(static_cast<int>(it - entries.begin()));
-                table.ends.push_back({lo, hi});
+                ++edge;
+                table.first[edge] = static_cast<int>(it - entries.begin());
+                table.ends[edge] = {lo, hi};
             }
             table.halfEdges[it - entries.begin()] = h;
-            table.halfEdgeEdge[h] = table.edgeCount() - 1;
+            table.halfEdgeEdge[h] = edge;
         }
     }
-    table.first.push_back(static_cast<int>(entries.size()));
+    table.first.back() = static_cast<int>(entries.size());
     return table;
 }
 

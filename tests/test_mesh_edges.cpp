@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <tuple>
@@ -212,4 +213,23 @@ TEST(MeshEdges, MatchesAPlainSortOnATorus)
     for (size_t i = 0; i < sides.size(); ++i) EXPECT_EQ(t.halfEdges[i], std::get<2>(sides[i]));
     EXPECT_EQ(t.edgeCount(), 3 * 23 * 17);  // V - E + F = 0
     for (int e = 0; e < t.edgeCount(); ++e) EXPECT_EQ(t.faceCount(e), 2);
+}
+
+// Big tables are filled on threads (by buckets of the smaller vertex): the same table on any
+// thread count.
+TEST(EdgeTable, SameOnAnyThreadCount)
+{
+    const TriMesh m = testmesh::icosphere(6);  // 245 760 half-edges: above the threads' threshold
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const EdgeTable one = buildEdgeTable(m);
+    omp_set_num_threads(3);
+    const EdgeTable three = buildEdgeTable(m);
+    omp_set_num_threads(saved);
+    EXPECT_EQ(one.ends, three.ends);
+    EXPECT_EQ(one.first, three.first);
+    EXPECT_EQ(one.halfEdges, three.halfEdges);
+    EXPECT_EQ(one.halfEdgeEdge, three.halfEdgeEdge);
+    EXPECT_EQ(one.edgeCount(), 3 * m.faceCount() / 2);
+    expectConsistent(m.faces, three);
 }
