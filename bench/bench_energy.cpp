@@ -400,6 +400,19 @@ void BM_EdgeTable(benchmark::State& state)
 }
 BENCHMARK(BM_EdgeTable)->Args({0, 1})->Args({0, 2})->Args({1, 1})->Args({1, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The closest-point tree's build on bunny.obj subdivided once (279 000 faces), 1 and 2 threads
+// (its subtrees below the top 3 levels are built on threads from 100 000 faces).
+void BM_ClosestPointTreeBuildDense(benchmark::State& state)
+{
+    const TriMesh& mesh = dense().surface;
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        const ClosestPointTree tree(mesh);
+        benchmark::DoNotOptimize(&tree);
+    }
+}
+BENCHMARK(BM_ClosestPointTreeBuildDense)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The simplification of a dense surface (bunny.obj subdivided once, 279 000 faces, to a sixteenth
 // of them), 2 threads: Arg 0 one pass; Arg 1 in 6 blocks in parallel, then one pass over the
 // merged blocks (what inputs of 500 000 faces or more get by default).

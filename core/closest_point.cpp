@@ -4,6 +4,7 @@
 #include "mesh_edges.h"
 
 #include <Eigen/Geometry>
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -148,6 +149,10 @@ struct ClosestPointTree::Impl {
     };
 
     static constexpr int kLeafSize = 4;
+    //! The build's top levels run on one thread, the 2^kTopLevels subtrees below them on all,
+    //! from this many faces on.
+    static constexpr int kTopLevels = 3;
+    static constexpr int kMinFacesForThreads = 100000;
     //! The traversal descends into the nearer child and pushes at most the farther one per
     //! level, so the stack never holds more than `depth` entries; a median split bounds the
     //! depth by log2(faces) + 1 <= 32 for any int face count.
@@ -191,9 +196,23 @@ struct ClosestPointTree::Impl {
         return Triangle{a, b, c, normal, normal2, face, normal2 > kNeedleSin2 * ab.squaredNorm() * ac.squaredNorm()};
     }
 
+    //! A subtree left for the parallel part of the build: faces order[begin, end), its node
+    //! to be stored as child `slot` of pair `pair` (or as the root when pair < 0).
+    struct Subtree {
+        int pair, slot, begin, end;
+    };
+
     void build(const TriMesh& mesh);
-    int buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
-                  const TriMesh& mesh);
+    //! The box of faces order[begin, end) into `node`; a leaf when they are few (returns -1),
+    //! else the split: the faces reordered about the median of the centroids (returns it).
+    static int splitNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
+                         const TriMesh& mesh);
+    //! The subtree of order[begin, end) into `node`, its pairs appended to `out`; its depth.
+    static int buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
+                         const TriMesh& mesh, std::vector<NodePair>& out);
+    //! The top `levels` levels into `pairs`; the subtrees below them into `subtrees`; its depth.
+    int buildTop(Node& node, int begin, int end, int levels, std::vector<int>& order, const std::vector<Vec3>& centroids,
+                 const TriMesh& mesh, std::vector<Subtree>& subtrees);
 };
 
 namespace {
@@ -234,12 +253,37 @@ void ClosestPointTree::Impl::build(const TriMesh& mesh)
         order[f] = f;
     }
     pairs.reserve(faceCount / kLeafSize + 1);
-    const int depth = buildNode(root, 0, faceCount, order, centroids, mesh);
+    // The top levels here, the subtrees below them in parallel, each into pairs of its own,
+    // then appended in order (their child indices moved by the offset). The tree is the same
+    // whatever the threads (its numbering aside, which no query sees).
+    const bool threads = faceCount >= kMinFacesForThreads;
+    std::vector<Subtree> subtrees;
+    const int topDepth = buildTop(root, 0, faceCount, threads ? kTopLevels : 64, order, centroids, mesh, subtrees);
+    std::vector<Node> subtreeRoots(subtrees.size());
+    std::vector<std::vector<NodePair>> subtreePairs(subtrees.size());
+    std::vector<int> subtreeDepth(subtrees.size(), 0);
+#pragma omp parallel for schedule(dynamic, 1) if (threads)
+    for (int i = 0; i < static_cast<int>(subtrees.size()); ++i)
+        subtreeDepth[size_t(i)] = buildNode(subtreeRoots[size_t(i)], subtrees[size_t(i)].begin, subtrees[size_t(i)].end, order,
+                                            centroids, mesh, subtreePairs[size_t(i)]);
+    int depth = topDepth;
+    for (size_t i = 0; i < subtrees.size(); ++i) {
+        const int offset = static_cast<int>(pairs.size());
+        auto moved = [offset](Node node) {
+            if (node.count == 0) node.first += offset;  // internal: its pair index
+            return node;
+        };
+        for (const NodePair& pair : subtreePairs[i]) pairs.push_back({{moved(pair.child[0]), moved(pair.child[1])}});
+        const Node top = moved(subtreeRoots[i]);
+        (subtrees[i].pair < 0 ? root : pairs[size_t(subtrees[i].pair)].child[subtrees[i].slot]) = top;
+        depth = std::max(depth, kTopLevels + subtreeDepth[i]);
+    }
     if (depth > kStackSize) throw Error("closest-point tree: depth exceeds the traversal stack");
     empty = false;
 
     triangles.resize(faceCount);
     slotOfFace.resize(faceCount);
+#pragma omp parallel for schedule(static) if (threads)
     for (int i = 0; i < faceCount; ++i) {
         const Face& t = mesh.faces[order[i]];
         triangles[i] = makeTriangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], order[i]);
@@ -247,8 +291,7 @@ void ClosestPointTree::Impl::build(const TriMesh& mesh)
     }
 }
 
-//! Builds the subtree of faces order[begin, end) into `node`; returns its depth.
-int ClosestPointTree::Impl::buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
+int ClosestPointTree::Impl::splitNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
                                       const TriMesh& mesh)
 {
     Vec3 lo = Vec3::Constant(kInfinity), hi = Vec3::Constant(-kInfinity);
@@ -269,7 +312,7 @@ int ClosestPointTree::Impl::buildNode(Node& node, int begin, int end, std::vecto
     if (end - begin <= kLeafSize) {
         node.first = begin;
         node.count = end - begin;
-        return 0;
+        return -1;
     }
     // Split on the longest axis of the centroids' box rather than of the triangles' box: one
     // long triangle must not decide the axis for all the others.
@@ -284,13 +327,42 @@ int ClosestPointTree::Impl::buildNode(Node& node, int begin, int end, std::vecto
         const double cf = centroids[f][axis], cg = centroids[g][axis];
         return cf < cg || (cf == cg && f < g);
     });
+    node.count = 0;
+    return mid;
+}
+
+int ClosestPointTree::Impl::buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
+                                      const TriMesh& mesh, std::vector<NodePair>& out)
+{
+    const int mid = splitNode(node, begin, end, order, centroids, mesh);
+    if (mid < 0) return 0;
+    const int pair = static_cast<int>(out.size());
+    node.first = pair;
+    out.emplace_back();  // `node` may live in `out`: not used after this point
+    Node left{}, right{};
+    const int depthLeft = buildNode(left, begin, mid, order, centroids, mesh, out);
+    const int depthRight = buildNode(right, mid, end, order, centroids, mesh, out);
+    out[pair].child[0] = left;
+    out[pair].child[1] = right;
+    return 1 + std::max(depthLeft, depthRight);
+}
+
+int ClosestPointTree::Impl::buildTop(Node& node, int begin, int end, int levels, std::vector<int>& order,
+                                     const std::vector<Vec3>& centroids, const TriMesh& mesh, std::vector<Subtree>& subtrees)
+{
+    const int mid = splitNode(node, begin, end, order, centroids, mesh);
+    if (mid < 0) return 0;
     const int pair = static_cast<int>(pairs.size());
     node.first = pair;
-    node.count = 0;
     pairs.emplace_back();  // `node` may live in `pairs`: not used after this point
+    if (levels == 1) {     // the children's subtrees: later, in parallel
+        subtrees.push_back({pair, 0, begin, mid});
+        subtrees.push_back({pair, 1, mid, end});
+        return 1;
+    }
     Node left{}, right{};
-    const int depthLeft = buildNode(left, begin, mid, order, centroids, mesh);
-    const int depthRight = buildNode(right, mid, end, order, centroids, mesh);
+    const int depthLeft = buildTop(left, begin, mid, levels - 1, order, centroids, mesh, subtrees);
+    const int depthRight = buildTop(right, mid, end, levels - 1, order, centroids, mesh, subtrees);
     pairs[pair].child[0] = left;
     pairs[pair].child[1] = right;
     return 1 + std::max(depthLeft, depthRight);

@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <limits>
@@ -131,6 +132,27 @@ TEST(ClosestPointTriangle, NeedleTriangleMatchesItsLongEdges)
 TEST(ClosestPointTree, MatchesBruteForceOnIcosphere) { expectTreeMatchesBruteForce(icosphere(3), 3000, 1.6, 11); }
 
 TEST(ClosestPointTree, MatchesBruteForceOnTorus) { expectTreeMatchesBruteForce(torus(40, 24), 3000, 1.6, 12); }
+
+// From 100 000 faces the tree's subtrees are built on threads: still exact, and the same answers
+// (faces, points) as built on one thread.
+TEST(ClosestPointTree, BuiltOnThreadsMatchesBruteForceAndOneThread)
+{
+    const TriMesh mesh = torus(400, 130);  // 104 000 faces
+    expectTreeMatchesBruteForce(mesh, 40, 1.6, 13);
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const ClosestPointTree one(mesh);
+    omp_set_num_threads(3);
+    const ClosestPointTree three(mesh);
+    omp_set_num_threads(saved);
+    std::mt19937_64 rng(14);
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 p = randomPoint(rng, 1.6);
+        const ClosestPoint a = one.closest(p), b = three.closest(p);
+        ASSERT_EQ(a.face, b.face) << i;
+        ASSERT_EQ(a.point, b.point) << i;
+    }
+}
 
 TEST(ClosestPointTree, PointsOnTheSurfaceHaveZeroDistance)
 {
