@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace fieldcvt {
@@ -207,12 +208,13 @@ struct ClosestPointTree::Impl {
     //! else the split: the faces reordered about the median of the centroids (returns it).
     static int splitNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
                          const TriMesh& mesh);
-    //! The subtree of order[begin, end) into `node`, its pairs appended to `out`; its depth.
-    static int buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
-                         const TriMesh& mesh, std::vector<NodePair>& out);
-    //! The top `levels` levels into `pairs`; the subtrees below them into `subtrees`; its depth.
+    //! The subtree of order[begin, end) into `node`, its pairs into pairs[next, ...) (`next`
+    //! moves past them; `pairs` is sized beforehand: pairCountOf); its depth.
+    int buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
+                  const TriMesh& mesh, int& next);
+    //! The top `levels` levels the same way; the subtrees below them into `subtrees`; its depth.
     int buildTop(Node& node, int begin, int end, int levels, std::vector<int>& order, const std::vector<Vec3>& centroids,
-                 const TriMesh& mesh, std::vector<Subtree>& subtrees);
+                 const TriMesh& mesh, int& next, std::vector<Subtree>& subtrees);
 };
 
 namespace {
@@ -230,6 +232,25 @@ float roundDown(double x)
 
 //! Smallest float >= x.
 float roundUp(double x) { return -roundDown(-x); }
+
+//! Internal nodes (pairs of children) of the tree over `faces` faces: median splits down to
+//! leaves of at most `leafSize`. A level has subtrees of at most two sizes (m and m + 1), so
+//! the counts per size are remembered: a few dozen calls, not one per node.
+int pairCountOf(int faces, int leafSize, std::map<int, int>& known)
+{
+    if (faces <= leafSize) return 0;
+    const auto it = known.find(faces);
+    if (it != known.end()) return it->second;
+    const int count = 1 + pairCountOf(faces / 2, leafSize, known) + pairCountOf(faces - faces / 2, leafSize, known);
+    known[faces] = count;
+    return count;
+}
+
+int pairCountOf(int faces, int leafSize)
+{
+    std::map<int, int> known;
+    return pairCountOf(faces, leafSize, known);
+}
 
 }  // namespace
 
@@ -252,32 +273,28 @@ void ClosestPointTree::Impl::build(const TriMesh& mesh)
         centroids[f] = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
         order[f] = f;
     }
-    pairs.reserve(faceCount / kLeafSize + 1);
-    // The top levels here, the subtrees below them in parallel, each into pairs of its own,
-    // then appended in order (their child indices moved by the offset). The tree is the same
-    // whatever the threads (its numbering aside, which no query sees).
+    // The top levels here, the subtrees below them in parallel, each into its own range of
+    // `pairs` (a subtree's pair count follows from its face count), so nothing is copied. The
+    // tree is the same whatever the threads.
+    pairs.resize(size_t(pairCountOf(faceCount, kLeafSize)));
     const bool threads = faceCount >= kMinFacesForThreads;
     std::vector<Subtree> subtrees;
-    const int topDepth = buildTop(root, 0, faceCount, threads ? kTopLevels : 64, order, centroids, mesh, subtrees);
-    std::vector<Node> subtreeRoots(subtrees.size());
-    std::vector<std::vector<NodePair>> subtreePairs(subtrees.size());
+    int next = 0;
+    int depth = buildTop(root, 0, faceCount, threads ? kTopLevels : kStackSize + 1, order, centroids, mesh, next, subtrees);
+    std::vector<int> first(subtrees.size() + 1, next);
+    for (size_t i = 0; i < subtrees.size(); ++i)
+        first[i + 1] = first[i] + pairCountOf(subtrees[i].end - subtrees[i].begin, kLeafSize);
     std::vector<int> subtreeDepth(subtrees.size(), 0);
 #pragma omp parallel for schedule(dynamic, 1) if (threads)
-    for (int i = 0; i < static_cast<int>(subtrees.size()); ++i)
-        subtreeDepth[size_t(i)] = buildNode(subtreeRoots[size_t(i)], subtrees[size_t(i)].begin, subtrees[size_t(i)].end, order,
-                                            centroids, mesh, subtreePairs[size_t(i)]);
-    int depth = topDepth;
-    for (size_t i = 0; i < subtrees.size(); ++i) {
-        const int offset = static_cast<int>(pairs.size());
-        auto moved = [offset](Node node) {
-            if (node.count == 0) node.first += offset;  // internal: its pair index
-            return node;
-        };
-        for (const NodePair& pair : subtreePairs[i]) pairs.push_back({{moved(pair.child[0]), moved(pair.child[1])}});
-        const Node top = moved(subtreeRoots[i]);
-        (subtrees[i].pair < 0 ? root : pairs[size_t(subtrees[i].pair)].child[subtrees[i].slot]) = top;
-        depth = std::max(depth, kTopLevels + subtreeDepth[i]);
+    for (int i = 0; i < static_cast<int>(subtrees.size()); ++i) {
+        const Subtree& subtree = subtrees[size_t(i)];
+        Node top{};
+        int cursor = first[size_t(i)];
+        subtreeDepth[size_t(i)] = buildNode(top, subtree.begin, subtree.end, order, centroids, mesh, cursor);
+        pairs[size_t(subtree.pair)].child[subtree.slot] = top;
     }
+    for (int d : subtreeDepth) depth = std::max(depth, kTopLevels + d);
+    if (first.back() != static_cast<int>(pairs.size())) throw Error("closest-point tree: node count mismatch");
     if (depth > kStackSize) throw Error("closest-point tree: depth exceeds the traversal stack");
     empty = false;
 
@@ -332,39 +349,38 @@ int ClosestPointTree::Impl::splitNode(Node& node, int begin, int end, std::vecto
 }
 
 int ClosestPointTree::Impl::buildNode(Node& node, int begin, int end, std::vector<int>& order, const std::vector<Vec3>& centroids,
-                                      const TriMesh& mesh, std::vector<NodePair>& out)
+                                      const TriMesh& mesh, int& next)
 {
     const int mid = splitNode(node, begin, end, order, centroids, mesh);
     if (mid < 0) return 0;
-    const int pair = static_cast<int>(out.size());
+    const int pair = next++;
     node.first = pair;
-    out.emplace_back();  // `node` may live in `out`: not used after this point
     Node left{}, right{};
-    const int depthLeft = buildNode(left, begin, mid, order, centroids, mesh, out);
-    const int depthRight = buildNode(right, mid, end, order, centroids, mesh, out);
-    out[pair].child[0] = left;
-    out[pair].child[1] = right;
+    const int depthLeft = buildNode(left, begin, mid, order, centroids, mesh, next);
+    const int depthRight = buildNode(right, mid, end, order, centroids, mesh, next);
+    pairs[size_t(pair)].child[0] = left;
+    pairs[size_t(pair)].child[1] = right;
     return 1 + std::max(depthLeft, depthRight);
 }
 
 int ClosestPointTree::Impl::buildTop(Node& node, int begin, int end, int levels, std::vector<int>& order,
-                                     const std::vector<Vec3>& centroids, const TriMesh& mesh, std::vector<Subtree>& subtrees)
+                                     const std::vector<Vec3>& centroids, const TriMesh& mesh, int& next,
+                                     std::vector<Subtree>& subtrees)
 {
     const int mid = splitNode(node, begin, end, order, centroids, mesh);
     if (mid < 0) return 0;
-    const int pair = static_cast<int>(pairs.size());
+    const int pair = next++;
     node.first = pair;
-    pairs.emplace_back();  // `node` may live in `pairs`: not used after this point
-    if (levels == 1) {     // the children's subtrees: later, in parallel
+    if (levels == 1) {  // the children's subtrees: later, in parallel
         subtrees.push_back({pair, 0, begin, mid});
         subtrees.push_back({pair, 1, mid, end});
         return 1;
     }
     Node left{}, right{};
-    const int depthLeft = buildTop(left, begin, mid, levels - 1, order, centroids, mesh, subtrees);
-    const int depthRight = buildTop(right, mid, end, levels - 1, order, centroids, mesh, subtrees);
-    pairs[pair].child[0] = left;
-    pairs[pair].child[1] = right;
+    const int depthLeft = buildTop(left, begin, mid, levels - 1, order, centroids, mesh, next, subtrees);
+    const int depthRight = buildTop(right, mid, end, levels - 1, order, centroids, mesh, next, subtrees);
+    pairs[size_t(pair)].child[0] = left;
+    pairs[size_t(pair)].child[1] = right;
     return 1 + std::max(depthLeft, depthRight);
 }
 
