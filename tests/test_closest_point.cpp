@@ -2,12 +2,13 @@
 #include "closest_point.h"
 #include "errors.h"
 #include "test_meshes.h"
+#include "thread_count.h"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
 
 namespace fieldcvt {
@@ -139,16 +140,12 @@ TEST(ClosestPointTree, BuiltOnThreadsMatchesBruteForceAndOneThread)
 {
     const TriMesh mesh = torus(400, 130);  // 104 000 faces
     expectTreeMatchesBruteForce(mesh, 40, 1.6, 13);
-    const int saved = omp_get_max_threads();
-    omp_set_num_threads(1);
-    const ClosestPointTree one(mesh);
-    omp_set_num_threads(3);
-    const ClosestPointTree three(mesh);
-    omp_set_num_threads(saved);
+    const auto one = testthreads::withThreadCount(1, [&] { return std::make_unique<ClosestPointTree>(mesh); });
+    const auto three = testthreads::withThreadCount(3, [&] { return std::make_unique<ClosestPointTree>(mesh); });
     std::mt19937_64 rng(14);
     for (int i = 0; i < 2000; ++i) {
         const Vec3 p = randomPoint(rng, 1.6);
-        const ClosestPoint a = one.closest(p), b = three.closest(p);
+        const ClosestPoint a = one->closest(p), b = three->closest(p);
         ASSERT_EQ(a.face, b.face) << i;
         ASSERT_EQ(a.point, b.point) << i;
     }

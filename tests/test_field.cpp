@@ -8,9 +8,9 @@
 #include "mesh_io.h"
 #include "metrics.h"
 #include "test_meshes.h"
+#include "thread_count.h"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -261,12 +261,8 @@ TEST(Field, SameSeedSameFieldWithOneOrTwoThreads)
     }
     FieldParams params;
     params.seed = 42;
-    const int saved = omp_get_max_threads();
-    omp_set_num_threads(1);
-    const DirectionField one = computeField(m, params);
-    omp_set_num_threads(2);
-    const DirectionField two = computeField(m, params);
-    omp_set_num_threads(saved);
+    const DirectionField one = testthreads::withThreadCount(1, [&] { return computeField(m, params); });
+    const DirectionField two = testthreads::withThreadCount(2, [&] { return computeField(m, params); });
     ASSERT_EQ(one.directions.size(), two.directions.size());
     for (std::size_t v = 0; v < one.directions.size(); ++v) {
         ASSERT_EQ(one.directions[v], two.directions[v]) << v;  // bit for bit

@@ -2,9 +2,9 @@
 #include "errors.h"
 #include "mesh_edges.h"
 #include "test_meshes.h"
+#include "thread_count.h"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <tuple>
@@ -220,12 +220,8 @@ TEST(MeshEdges, MatchesAPlainSortOnATorus)
 TEST(EdgeTable, SameOnAnyThreadCount)
 {
     const TriMesh m = testmesh::icosphere(6);  // 245 760 half-edges: above the threads' threshold
-    const int saved = omp_get_max_threads();
-    omp_set_num_threads(1);
-    const EdgeTable one = buildEdgeTable(m);
-    omp_set_num_threads(3);
-    const EdgeTable three = buildEdgeTable(m);
-    omp_set_num_threads(saved);
+    const EdgeTable one = testthreads::withThreadCount(1, [&] { return buildEdgeTable(m); });
+    const EdgeTable three = testthreads::withThreadCount(3, [&] { return buildEdgeTable(m); });
     EXPECT_EQ(one.ends, three.ends);
     EXPECT_EQ(one.first, three.first);
     EXPECT_EQ(one.halfEdges, three.halfEdges);
