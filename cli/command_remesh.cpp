@@ -52,7 +52,8 @@ void printUsage()
         "                        --fcvt-iterations 65\n"
         "  --full-surface        optimise on the input itself, as the paper does, even when it has many\n"
         "                        more faces than the output (by default such an input is optimised on\n"
-        "                        a coarser copy, %d faces per vertex, and the result put back on it)\n"
+        "                        a coarser copy, %d faces per vertex up to %d faces and at least 2 per\n"
+        "                        vertex, and the result put back on it)\n"
         "  --random-start        start from random samples instead of the lattice points of the\n"
         "                        field-aligned position field (the default start when the field is\n"
         "                        used with a uniform density; it has no 5-7 pairs away from the field's\n"
@@ -110,7 +111,7 @@ void printUsage()
         "  -h, --help            show this help\n",
         vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda,
         defaults.latticeLloydIterations, defaults.lloydIterations, defaults.cvtIterations, defaults.fcvtIterations,
-        defaults.optimisationFacesPerSample, defaults.featureAngleDegrees, defaults.gradation,
+        defaults.optimisationFacesPerSample, defaults.optimisationFacesCap, defaults.featureAngleDegrees, defaults.gradation,
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 

@@ -6,6 +6,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -91,6 +92,7 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
     // Settings no front end offers: the core's words.
     if (p.boundaryIterations < 0) throw InvalidInputError("border iteration count must be >= 0");
     if (p.optimisationFacesPerSample < 0) throw InvalidInputError("optimisation faces per sample must be >= 0");
+    if (p.optimisationFacesCap < 0) throw InvalidInputError("optimisation face cap must be >= 0");
     if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");
     if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0)
         throw InvalidInputError("valence optimisation step counts must be >= 0");
@@ -103,6 +105,14 @@ std::string fieldMeshDescription(const RemeshResult& result)
     if (faces < result.inputTopology.faces)
         return "the optimisation surface, a simplified copy of the input (" + std::to_string(faces) + " faces)";
     return "the input (" + std::to_string(faces) + " faces)";
+}
+
+int optimisationFaceTarget(const RemeshParams& params, int sampleCount)
+{
+    constexpr long long kMinFacesPerSample = 2;
+    const long long full = static_cast<long long>(params.optimisationFacesPerSample) * sampleCount;
+    const long long floor = std::min(full, kMinFacesPerSample * sampleCount);
+    return static_cast<int>(std::max(floor, std::min(full, static_cast<long long>(params.optimisationFacesCap))));
 }
 
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)

@@ -256,12 +256,12 @@ void findFeatureLines(RemeshRun& run)
 void chooseOptimisationSurface(RemeshRun& run)
 {
     const RemeshParams& p = run.params;
-    run.simplified = p.optimisationFacesPerSample > 0 &&
-                     double(run.surface.faceCount()) > 1.5 * p.optimisationFacesPerSample * double(run.sampleCount);
+    const int coarseFaces = optimisationFaceTarget(p, run.sampleCount);
+    run.simplified = coarseFaces > 0 && double(run.surface.faceCount()) > 1.5 * double(coarseFaces);
     if (run.simplified) {
         run.pipeline.run("simplify", [&] {
             SimplifyParams simplify;
-            simplify.targetFaces = p.optimisationFacesPerSample * run.sampleCount;
+            simplify.targetFaces = coarseFaces;
             // 5 % of the output's edge length (about 1.07 at the working scale): the coarse
             // surface is within that of the input, far inside the output's own sag.
             simplify.maxError = 0.05;

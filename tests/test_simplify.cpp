@@ -230,3 +230,24 @@ TEST(Simplify, RemeshOfADenseInputMatchesTheFullSurfaceRun)
     EXPECT_GT(coarse.metrics.thetaMin, 30);
     EXPECT_LT(coarse.metrics.dH, 1.2 * full.metrics.dH);
 }
+
+// The coarse surface's size: 4 faces a sample below the cap, the cap above it, never fewer
+// than 2 a sample; a cap of 0 gives 2 a sample, a per-sample count of 0 no coarse surface.
+TEST(Simplify, OptimisationFaceTargetCapsLargeRuns)
+{
+    RemeshParams params;
+    EXPECT_EQ(optimisationFaceTarget(params, 5000), 20000);     // the shared rows: 4 a sample
+    EXPECT_EQ(optimisationFaceTarget(params, 50000), 200000);   // at the cap
+    EXPECT_EQ(optimisationFaceTarget(params, 75000), 200000);   // capped: 2.7 a sample
+    EXPECT_EQ(optimisationFaceTarget(params, 400000), 800000);  // 2 a sample, over the cap
+    EXPECT_EQ(optimisationFaceTarget(params, 5000000), 10000000);
+    params.optimisationFacesCap = 0;
+    EXPECT_EQ(optimisationFaceTarget(params, 5000), 10000);
+    params.optimisationFacesPerSample = 1;  // fewer than 2 asked for: as asked
+    EXPECT_EQ(optimisationFaceTarget(params, 5000), 5000);
+    params.optimisationFacesPerSample = 0;
+    EXPECT_EQ(optimisationFaceTarget(params, 5000), 0);
+    params.optimisationFacesCap = -1;
+    params.vertexCount = 100;
+    EXPECT_THROW(remesh(testmesh::icosphere(2), params), InvalidInputError);
+}
