@@ -39,6 +39,16 @@ long long adviseHugePages()
     std::FILE* maps = std::fopen("/proc/self/maps", "r");
     if (!maps) return 0;
     long long marked = 0;
+    // Adjacent anonymous mappings are marked as one range: the heap is often several mappings
+    // (its parts marked earlier, the part it grew by since), and a part under 2 MB between them
+    // would otherwise never be marked, nor merge with its neighbours into huge pages.
+    std::uintptr_t runBegin = 0, runEnd = 0;
+    auto markRun = [&] {
+        const std::uintptr_t first = (runBegin + kHugePage - 1) & ~(kHugePage - 1);
+        const std::uintptr_t last = runEnd & ~(kHugePage - 1);
+        if (last > first && madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE) == 0)
+            marked += static_cast<long long>(last - first);
+    };
     char line[512];
     while (std::fgets(line, sizeof line, maps)) {
         // A mapped file's line names it by its path: most lines where libraries are many
@@ -53,11 +63,14 @@ long long adviseHugePages()
                         &nameAt) < 6)
             continue;
         if (!isAnonymousPrivate(perms, inode, line + nameAt)) continue;
-        const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
-        const std::uintptr_t last = end & ~(kHugePage - 1);
-        if (last > first && madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE) == 0)
-            marked += static_cast<long long>(last - first);
+        if (begin == runEnd && runEnd != 0) {
+            runEnd = end;
+            continue;
+        }
+        markRun();
+        runBegin = begin, runEnd = end;
     }
+    markRun();
     std::fclose(maps);
     return marked;
 #else

@@ -10,7 +10,8 @@
 namespace fieldcvt {
 
 //! Marks the process's anonymous private memory of at least one 2 MB page (the heap, malloc's
-//! arenas and mapped blocks, their reserved parts) with madvise(MADV_HUGEPAGE): pages touched
+//! arenas and mapped blocks, their reserved parts; adjacent mappings as one range, so that a
+//! part under 2 MB between two others is marked too) with madvise(MADV_HUGEPAGE): pages touched
 //! after the call come as huge pages where 2 MB of a mapping are still untouched. remesh() calls
 //! it before each stage (through adviseNewHugePages), so that what the last stage added is
 //! covered. Returns the bytes marked; 0 where the kernel has no such advice or /proc/self/maps
