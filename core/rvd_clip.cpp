@@ -266,12 +266,14 @@ inline int RestrictedVoronoiDiagram::Impl::recordFragment(const Polygon& poly, i
         const int e = -1 - poly.label[k];
         const int across = neighbourFace[3 * t + e];
         if (across < 0) continue;
+        out.links.push_back({index, across});
+        if (!seedNormals) continue;
         const Vec3& v0 = position[faces[t][e]];
         const Vec3 along = position[faces[t][(e + 1) % 3]] - v0;
         const double len2 = along.squaredNorm();
         const double from = len2 > 0 ? (poly.point[k] - v0).dot(along) / len2 : 0;
         const double to = len2 > 0 ? (poly.point[(k + 1) % poly.size] - v0).dot(along) / len2 : 0;
-        out.links.push_back({index, across, e, from, to});
+        out.linkSpans.push_back({e, from, to});
     }
     return index;
 }
