@@ -47,7 +47,8 @@ void printUsage()
         "  --lloyd-iterations K  Lloyd steps from the start before L-BFGS, >= 0 (default %d from the\n"
         "                        lattice start, %d from a random one)\n"
         "  --cvt-iterations A    L-BFGS iterations on the CVT energy, >= 0 (default %d)\n"
-        "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d);\n"
+        "  --fcvt-iterations B   then L-BFGS iterations on CVT + lambda * field energy, >= 0 (default %d,\n"
+        "                        %d from %d vertices on when starting from the lattice: as good there);\n"
         "                        the paper's fixed schedule: --lloyd-iterations 30 --cvt-iterations 65\n"
         "                        --fcvt-iterations 65\n"
         "  --full-surface        optimise on the input itself, as the paper does, even when it has many\n"
@@ -111,7 +112,8 @@ void printUsage()
         "  -h, --help            show this help\n",
         vertexCountRange().c_str(), fieldSourceName(defaults.fieldSource).c_str(), defaults.lambda,
         defaults.latticeLloydIterations, defaults.lloydIterations, defaults.cvtIterations, defaults.fcvtIterations,
-        defaults.optimisationFacesPerSample, defaults.optimisationFacesCap, defaults.featureAngleDegrees, defaults.gradation,
+        defaults.largeRunFcvtIterations, defaults.largeRunSamples, defaults.optimisationFacesPerSample,
+        defaults.optimisationFacesCap, defaults.featureAngleDegrees, defaults.gradation,
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
@@ -130,7 +132,8 @@ RemeshParams paramsFrom(const Arguments& a)
     if (a.has("lloyd-iterations"))  // from either start
         p.lloydIterations = p.latticeLloydIterations = a.saturatedInt("lloyd-iterations", p.lloydIterations);
     p.cvtIterations = a.saturatedInt("cvt-iterations", p.cvtIterations);
-    p.fcvtIterations = a.saturatedInt("fcvt-iterations", p.fcvtIterations);
+    if (a.has("fcvt-iterations"))  // at any size
+        p.fcvtIterations = p.largeRunFcvtIterations = a.saturatedInt("fcvt-iterations", p.fcvtIterations);
     p.seed = a.unsignedInteger("seed", p.seed);
     p.threads = a.saturatedInt("threads", p.threads);
     p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds);
@@ -165,6 +168,8 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"lattice_lloyd_iterations", p.latticeLloydIterations},
             {"cvt_iterations", p.cvtIterations},
             {"fcvt_iterations", p.fcvtIterations},
+            {"large_run_fcvt_iterations", p.largeRunFcvtIterations},
+            {"large_run_samples", p.largeRunSamples},
             {"seed", p.seed},
             {"threads", p.threads},
             {"time_limit_s", p.timeLimitSeconds},
@@ -208,6 +213,7 @@ nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string
             {"faces", result.mesh.faceCount()},
             {"mean_edge_length", figures.meanEdge},
             {"evaluations", result.evaluations},
+            {"fcvt_iterations", result.fcvtIterations},
             {"threads_used", result.threads},
             {"optimisation_faces", result.optimisationFaces},
             {"thin_parts",

@@ -82,6 +82,8 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
     if (p.latticeLloydIterations < 0) fail(names.lloydIterations, ">= 0", std::to_string(p.latticeLloydIterations));
     if (p.cvtIterations < 0) fail(names.cvtIterations, ">= 0", std::to_string(p.cvtIterations));
     if (p.fcvtIterations < 0) fail(names.fcvtIterations, ">= 0", std::to_string(p.fcvtIterations));
+    if (p.largeRunFcvtIterations < 0) fail(names.fcvtIterations, ">= 0", std::to_string(p.largeRunFcvtIterations));
+    if (p.largeRunSamples < 0) throw InvalidInputError("large-run sample count must be >= 0");
     if (p.threads < 0 || p.threads > kMaxThreads)
         fail(names.threads, "between 0 and " + std::to_string(kMaxThreads) + " (0 = all cores)", std::to_string(p.threads));
     if (!(p.timeLimitSeconds >= 0) || !std::isfinite(p.timeLimitSeconds))

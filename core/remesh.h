@@ -69,6 +69,15 @@ struct RemeshParams {
     int latticeLloydIterations = 0;
     int cvtIterations = 10;   //!< L-BFGS iterations on E_CVT (see lloydIterations)
     int fcvtIterations = 40;  //!< then L-BFGS iterations on E_CVT + λ E_field (see lloydIterations)
+    //! FCVT iterations instead of fcvtIterations from largeRunSamples samples on, when the start
+    //! is the lattice (latticeStart). There each cell spans a nearly flat patch and the lattice
+    //! starts close to the optimum: E_field levels off within 5 iterations, and 20 instead of 40
+    //! gave the same figures in 0.5 of the FCVT stage (nefertiti x2 at 50 000 / 100 000, bunny x2
+    //! at 60 000 / 150 000, camelhead x2 at 60 000: Q_avg within -0.0009..0, V6 within ±0.05,
+    //! d_H within the seeds' spread; docs/measurements.md). Below it the shared rows need 40
+    //! (25 or 30 lost V6 on fandisk 5000). The CLI's --fcvt-iterations sets both.
+    int largeRunFcvtIterations = 20;
+    int largeRunSamples = 50000;
     //! Open surfaces and sharp features (the second stage of §5): Lloyd steps after the CVT
     //! iterations that put the samples of cells meeting the input's border or a feature line on
     //! it (a 1D CVT along the curve) and one sample on each feature corner, so the output's
@@ -198,6 +207,7 @@ struct StageTime {
 struct RemeshResult {
     TriMesh mesh;                       //!< the restricted Delaunay triangulation
     int evaluations = 0;                //!< energy + gradient evaluations
+    int fcvtIterations = 0;             //!< the FCVT iteration budget used (RemeshParams::largeRunFcvtIterations)
     std::vector<StageTime> stageTimes;  //!< per-stage wall time, in pipeline order
     double totalSeconds = 0;
     QualityMetrics metrics;             //!< Table 2 figures of mesh (d_* against the input)

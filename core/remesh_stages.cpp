@@ -94,7 +94,7 @@ void onEvaluation(RemeshRun& run, const EnergyValue& value)
     const RemeshParams& p = run.params;
     const int budget = run.phase == Phase::Lloyd  ? run.lloydSteps
                        : run.phase == Phase::Cvt  ? p.cvtIterations
-                       : run.phase == Phase::Fcvt ? p.fcvtIterations
+                       : run.phase == Phase::Fcvt ? run.fcvtIterations
                                                   : 0;
     if (run.phase != run.stepPhase) run.stepPhase = run.phase, run.steps = 0;
     run.steps += accepted;
@@ -325,8 +325,11 @@ void setUpEnergy(RemeshRun& run)
     const bool uniform = std::all_of(rho.begin(), rho.end(), [&](double r) { return r == rho.front(); });
     run.latticeStart = p.initialSamples.empty() && p.latticeStart && run.useField && uniform && run.features.segments.empty();
     run.lloydSteps = run.latticeStart ? p.latticeLloydIterations : p.lloydIterations;
+    const bool largeRun = run.latticeStart && run.sampleCount >= p.largeRunSamples;
+    run.fcvtIterations = largeRun && p.fcvtIterations > 0 ? p.largeRunFcvtIterations : p.fcvtIterations;
+    run.result.fcvtIterations = run.fcvtIterations;
     run.expectedEvaluations =
-        run.lloydSteps + 1.1 * (p.cvtIterations + p.fcvtIterations) + (constrained ? p.boundaryIterations : 0) + 2;
+        run.lloydSteps + 1.1 * (p.cvtIterations + run.fcvtIterations) + (constrained ? p.boundaryIterations : 0) + 2;
     // The energy's diagram structures and the surface's closest-point tree are independent and
     // serial: built side by side.
     const bool treeBuilt = run.tree != nullptr;  // by the first pass (remeshThinPartsAgain runs this again)
@@ -423,18 +426,18 @@ void optimiseSamples(RemeshRun& run)
         run.pipeline.run("features", [&] {
             run.phase = Phase::Features;
             run.sampleRoles = relaxConstrainedSamples(energy, run.seeds, run.optSurface(), run.border, run.features,
-                                                      p.boundaryIterations, p.fcvtIterations > 0);
+                                                      p.boundaryIterations, run.fcvtIterations > 0);
             std::vector<char> frozen(run.seeds.size(), 0);
             for (size_t i = 0; i < run.seeds.size(); ++i) frozen[i] = run.sampleRoles[i] != SampleConstraint::Free;
             energy.setFrozen(std::move(frozen));
         });
-        if (p.fcvtIterations > 0) {
+        if (run.fcvtIterations > 0) {
             run.pipeline.run("fcvt", [&] {
                 run.phase = Phase::Fcvt;
                 run.best = std::numeric_limits<double>::infinity();
                 energy.setField(run.useField ? &run.field : nullptr, run.tree.get(), p.lambda);
-                lbfgs(run, p.fcvtIterations);
-                if (reseedEmpty(run) > 0) lbfgs(run, std::min(10, p.fcvtIterations));  // to find their place
+                lbfgs(run, run.fcvtIterations);
+                if (reseedEmpty(run) > 0) lbfgs(run, std::min(10, run.fcvtIterations));  // to find their place
             });
         }
     } catch (const TimeLimitReached&) {

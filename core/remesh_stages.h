@@ -102,6 +102,7 @@ struct RemeshRun {
     std::vector<Segment> border;  //!< the optimisation surface's own border edges
     bool latticeStart = false;    //!< start from the field-aligned lattice (lattice.h)
     int lloydSteps = 0;
+    int fcvtIterations = 0;          //!< RemeshParams::fcvtIterations or, on a large run, largeRunFcvtIterations
     double expectedEvaluations = 0;  //!< for the progress percentage
     std::unique_ptr<EnergyFunction> energy;
     std::unique_ptr<const ClosestPointTree> tree;  //!< the optimisation surface's

@@ -114,8 +114,12 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
         par.addParam(advanced(RichInt(kCvtIterations, defaults.cvtIterations, parameterLabel(kCvtIterations),
                                       "L-BFGS iterations on the CVT energy (the paper uses 130).")));
         par.addParam(advanced(RichInt(kFcvtIterations, defaults.fcvtIterations, parameterLabel(kFcvtIterations),
-                                      "L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
-                                      "iterations.")));
+                                      QString("L-BFGS iterations on CVT + lambda * field energy, run after the CVT "
+                                              "iterations. With the default, runs of %1 vertices or more from "
+                                              "the lattice start do %2 (as good there); any other value is "
+                                              "used at every size.")
+                                          .arg(defaults.largeRunSamples)
+                                          .arg(defaults.largeRunFcvtIterations))));
         par.addParam(advanced(RichBool(kFeatureSelection, false, parameterLabel(kFeatureSelection),
                                        "Also treat the border of the input's face selection (edges between a "
                                        "selected and an unselected face) as feature lines.")));

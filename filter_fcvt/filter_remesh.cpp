@@ -72,6 +72,9 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallB
     params.lambda = lambda;
     params.cvtIterations = cvtIterations;
     params.fcvtIterations = fcvtIterations;
+    // As the CLI: the default stands for "40, fewer on a large run" (RemeshParams::
+    // largeRunFcvtIterations); any other value is used at every size, as --fcvt-iterations is.
+    if (fcvtIterations != defaults.fcvtIterations) params.largeRunFcvtIterations = fcvtIterations;
     params.fieldSource = kFieldSources[fieldSource].source;
     params.seed = static_cast<std::uint64_t>(seed);
     params.valenceOptimization = boolParam(par, kValenceOptimization, defaults.valenceOptimization);

@@ -128,6 +128,29 @@ TEST(Remesh, RejectsOutOfRangeParameters)
     EXPECT_THROW(remesh(input, p), InvalidInputError);
 }
 
+TEST(Remesh, LargeRunsFromTheLatticeDoTheLargeRunFcvtIterations)
+{
+    // The rule of RemeshParams::largeRunFcvtIterations, with the threshold brought down to a
+    // small sphere: from largeRunSamples samples on and from the lattice start only.
+    const TriMesh input = testmesh::icosphere(3);
+    RemeshParams p;
+    p.vertexCount = 300;
+    p.valenceOptimization = false;
+    p.largeRunSamples = 300;
+    p.largeRunFcvtIterations = 7;
+    const RemeshResult large = remesh(input, p);
+    EXPECT_EQ(large.fcvtIterations, 7);
+    p.largeRunSamples = 301;
+    const RemeshResult small = remesh(input, p);
+    EXPECT_EQ(small.fcvtIterations, p.fcvtIterations);
+    EXPECT_GT(small.evaluations, large.evaluations + 20) << "the budget is what L-BFGS ran";
+    p.largeRunSamples = 300;
+    p.latticeStart = false;
+    EXPECT_EQ(remesh(input, p).fcvtIterations, p.fcvtIterations) << "random starts keep the full budget";
+    p.largeRunFcvtIterations = -1;
+    EXPECT_THROW(remesh(input, p), InvalidInputError);
+}
+
 TEST(Remesh, ReportsProgressInOrderAndCanBeCancelled)
 {
     const TriMesh input = testmesh::icosphere(3);

@@ -62,6 +62,18 @@ for extra, expect in [
               f"{label}: operations counted without valence optimisation: {valence}")
     print(label, "->", {k: valence.get(k) for k in VALENCE_KEYS})
 
+# --fcvt-iterations is used at any size: it sets the large runs' budget too (their default is
+# smaller, RemeshParams::largeRunFcvtIterations); the report says the budget the run had.
+report = os.path.join(work, "budget.json")
+for extra, large, used in [([], 20, 40), (["--fcvt-iterations", "5"], 5, 5)]:
+    run_ok([fcvt, "remesh", torus, out, "--vertices", "300", "--cvt-iterations", "5", "--no-valence", "--quiet",
+            "--report", report] + extra, timeout=600)
+    r = json.load(open(report))
+    label = " ".join(extra) or "defaults"
+    check(r["params"].get("large_run_fcvt_iterations") == large,
+          f"{label}: params.large_run_fcvt_iterations = {r['params'].get('large_run_fcvt_iterations')!r}, expected {large}")
+    check(r.get("fcvt_iterations") == used, f"{label}: fcvt_iterations = {r.get('fcvt_iterations')!r}, expected {used}")
+
 code, stdout, _ = run([fcvt, "remesh", "--help"])
 for option in ["--no-valence", "--feature-angle", "--adaptive", "--gradation"]:
     check(option in stdout, f"remesh --help does not mention {option}")
