@@ -3,6 +3,7 @@
 #include "disjoint_sets.h"
 #include "errors.h"
 #include "mesh_edges.h"
+#include "parallel_sort.h"
 #include "point_tree.h"
 #include "surface_gluing.h"
 #include "triple_hash.h"
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <iomanip>
 #include <numeric>
 #include <sstream>
@@ -191,6 +193,9 @@ std::vector<Face> weldVertices(const TriMesh& input, std::vector<Vec3>& pos, con
     if (tol > 0 && gridFits(pos, tol) && gridFits(pos, meanEdge)) {
         EdgeTable edges;
         const std::vector<char> border = borderVertices(faces, n, &edges);
+        // Both the weld and the T-junctions act on border vertices only: a closed surface (the
+        // common large input) has nothing to do here.
+        if (std::find(border.begin(), border.end(), 1) == border.end()) return faces;
         DisjointSets weld(n);
         PointGrid grid(tol, size_t(n / 4 + 1));
         for (int v = 0; v < n; ++v) {
@@ -232,7 +237,7 @@ void removeBadFaces(const std::vector<Vec3>& pos, std::vector<Face>& faces, Repa
         std::sort(k.corners.begin(), k.corners.end());
         keyed.push_back(k);
     }
-    std::sort(keyed.begin(), keyed.end());
+    parallelSort(keyed.begin(), keyed.end(), std::less<Keyed>());  // (corners, face): no ties
     std::vector<char> keep(faces.size(), 0);
     size_t first = 0;  // the first entry of the current corner set: its earliest face
     for (size_t i = 0; i < keyed.size(); ++i) {

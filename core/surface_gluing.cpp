@@ -1,10 +1,10 @@
 #include "surface_gluing.h"
 
 #include "disjoint_sets.h"
-#include "triple_hash.h"
+#include "parallel_sort.h"
 
 #include <array>
-#include <unordered_map>
+#include <numeric>
 
 namespace fieldcvt {
 
@@ -16,17 +16,31 @@ int cornerOf(const Face& t, int v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
 
 std::vector<int> exactDuplicateRepresentatives(const std::vector<Vec3>& points, const std::vector<char>& referenced, int& merged)
 {
+    // Equal points found by sorting (coordinates, index) on the threads: each set then starts
+    // with its lowest index. A hash map of the points took 0.25 s at 800 000 vertices. The
+    // referenced points are finite (both callers refuse or skip the others first), so the order
+    // is total.
+    struct Keyed {
+        std::array<double, 3> point;
+        int index;
+    };
     const int n = static_cast<int>(points.size());
     std::vector<int> rep(n);
+    std::iota(rep.begin(), rep.end(), 0);
     merged = 0;
-    std::unordered_map<std::array<double, 3>, int, TripleHash> first;
-    first.reserve(size_t(n));
-    for (int v = 0; v < n; ++v) {
-        rep[v] = v;
-        if (!referenced[v]) continue;
-        const std::array<double, 3> key{points[v].x() + 0.0, points[v].y() + 0.0, points[v].z() + 0.0};  // -0 -> +0
-        const auto [it, added] = first.emplace(key, v);
-        if (!added) rep[v] = it->second, ++merged;
+    std::vector<Keyed> keyed;
+    keyed.reserve(size_t(n));
+    for (int v = 0; v < n; ++v)
+        if (referenced[v]) keyed.push_back({{points[v].x() + 0.0, points[v].y() + 0.0, points[v].z() + 0.0}, v});  // -0 -> +0
+    parallelSort(keyed.begin(), keyed.end(),
+                 [](const Keyed& a, const Keyed& b) { return a.point != b.point ? a.point < b.point : a.index < b.index; });
+    for (size_t k = 1, first = 0; k < keyed.size(); ++k) {
+        if (keyed[k].point != keyed[first].point) {
+            first = k;
+            continue;
+        }
+        rep[size_t(keyed[k].index)] = keyed[first].index;
+        ++merged;
     }
     return rep;
 }

@@ -2,7 +2,9 @@
 #include "errors.h"
 #include "mesh_check.h"
 #include "remesh.h"
+#include "surface_gluing.h"
 #include "test_meshes.h"
+#include "thread_count.h"
 
 #include <gtest/gtest.h>
 
@@ -423,4 +425,39 @@ TEST(ScaleInvariance, CoarseSurfaceGivesTheSameFigures)
         EXPECT_NEAR(moved.metrics.dH, unit.metrics.dH, 0.3 * unit.metrics.dH);
         EXPECT_GT(moved.metrics.thetaMin, 20);
     }
+}
+
+TEST(MeshCheck, ExactDuplicatesMapToTheirLowestIndexOnAnyThreadCount)
+{
+    // 6 000 points drawn from 1 500 positions (parallel sorting starts at 1 000 elements), every
+    // tenth with its zero coordinates negated, every seventh unreferenced.
+    std::vector<Vec3> points;
+    std::vector<char> referenced;
+    unsigned state = 7;
+    auto next = [&] { return state = state * 1103515245u + 12345u, (state >> 16) % 1500; };
+    for (int v = 0; v < 6000; ++v) {
+        const unsigned k = next();
+        Vec3 p(double(k % 10), double(k / 10 % 10) * 0.5, double(k / 100));
+        if (v % 10 == 0) p = Vec3(p.x() == 0 ? -0.0 : p.x(), p.y() == 0 ? -0.0 : p.y(), p.z() == 0 ? -0.0 : p.z());
+        points.push_back(p);
+        referenced.push_back(v % 7 != 0);
+    }
+    // What the representatives must be: the first referenced vertex at each position.
+    std::map<std::array<double, 3>, int> first;
+    std::vector<int> expected(points.size());
+    int expectedMerged = 0;
+    for (int v = 0; v < static_cast<int>(points.size()); ++v) {
+        expected[v] = v;
+        if (!referenced[v]) continue;
+        const auto [it, added] = first.insert({{points[v].x() + 0.0, points[v].y() + 0.0, points[v].z() + 0.0}, v});
+        if (!added) expected[v] = it->second, ++expectedMerged;
+    }
+    for (int threads : {1, 2, 3}) {
+        int merged = -1;
+        const std::vector<int> rep =
+            testthreads::withThreadCount(threads, [&] { return exactDuplicateRepresentatives(points, referenced, merged); });
+        EXPECT_EQ(rep, expected) << threads << " threads";
+        EXPECT_EQ(merged, expectedMerged) << threads << " threads";
+    }
+    EXPECT_GT(expectedMerged, 3000);
 }
