@@ -4,6 +4,7 @@
 #include "energy.h"
 #include "mesh_check.h"
 #include "mesh_edges.h"
+#include "morton_order.h"
 #include "mesh_io.h"
 #include "optimize.h"
 #include "rdt.h"
@@ -399,6 +400,19 @@ void BM_EdgeTable(benchmark::State& state)
     state.counters["faces"] = mesh.faceCount();
 }
 BENCHMARK(BM_EdgeTable)->Args({0, 1})->Args({0, 2})->Args({1, 1})->Args({1, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The Morton order (morton_order.h) of the face centroids of bunny.obj subdivided once (279 000
+// points), 1 and 2 threads: the simplification's blocks, the RVD's renumbering and the closest-
+// point queries of every large run start with one.
+void BM_MortonOrderDense(benchmark::State& state)
+{
+    const TriMesh& mesh = dense().surface;
+    std::vector<Vec3> centroids;
+    for (const Face& t : mesh.faces) centroids.push_back((mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0);
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    for (auto _ : state) benchmark::DoNotOptimize(mortonIndexOrder(centroids).data());
+}
+BENCHMARK(BM_MortonOrderDense)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The closest-point tree's build on bunny.obj subdivided once (279 000 faces), 1 and 2 threads
 // (its subtrees below the top 3 levels are built on threads from 100 000 faces).
