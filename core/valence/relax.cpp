@@ -38,6 +38,11 @@ struct Relaxation {
     //! Per face, smallest angle and normal agreement before the step and after it (the safety
     //! net measures every face after a step: the next step's "before").
     std::vector<double> angleBefore, dotBefore, angleAfter, dotAfter;
+    std::vector<int> aliveFaces;  //!< the faces the safety net checks first (fixed connectivity)
+    //! Work space of each step, kept across steps (400 000 vertices: ~90 MB a step otherwise).
+    std::vector<Vec3> newPos;
+    std::vector<ClosestPoint> newClosest;
+    std::vector<char> moves, wrong;
 };
 
 Relaxation setUp(const ValenceMesh& mesh, SagGuard& sag, const ValenceParams& params)
@@ -79,6 +84,12 @@ Relaxation setUp(const ValenceMesh& mesh, SagGuard& sag, const ValenceParams& pa
 #pragma omp parallel for schedule(static)
     for (int f = 0; f < faceCount; ++f)
         if (mesh.faceAlive(f)) mesh.faceShape(f, s.angleBefore[f], s.dotBefore[f]);
+    for (int f = 0; f < faceCount; ++f)
+        if (mesh.faceAlive(f)) s.aliveFaces.push_back(f);
+    s.newPos.resize(n);
+    s.newClosest.resize(n);
+    s.moves.resize(n);
+    s.wrong.resize(faceCount);
     return s;
 }
 
@@ -160,15 +171,18 @@ bool stepOf(const ValenceMesh& mesh, const Relaxation& s, bool withField, int v,
 void step(ValenceMesh& mesh, Relaxation& s, bool withField, std::vector<Vec3>& oldPos, std::vector<MeshVertex>& oldData)
 {
     const int n = mesh.vertexCount();
-    oldPos = mesh.positions();
+    oldPos.resize(n);
     oldData.resize(n);
-    for (int v = 0; v < n; ++v) oldData[v] = mesh.data(v);
-    std::vector<Vec3> newPos(oldPos);
-    std::vector<ClosestPoint> newClosest(n);
-    std::vector<char> moves(n, 0);
+    std::vector<Vec3>& newPos = s.newPos;
+    std::vector<ClosestPoint>& newClosest = s.newClosest;
+    std::vector<char>& moves = s.moves;
 #pragma omp parallel for schedule(static)
-    for (int v = 0; v < n; ++v) moves[v] = stepOf(mesh, s, withField, v, newPos[v], newClosest[v]);
-    for (int v = 0; v < n; ++v) s.lastMove[v] = newPos[v] - oldPos[v];
+    for (int v = 0; v < n; ++v) {
+        oldPos[v] = newPos[v] = mesh.position(v);
+        oldData[v] = mesh.data(v);
+        moves[v] = stepOf(mesh, s, withField, v, newPos[v], newClosest[v]);
+        s.lastMove[v] = newPos[v] - oldPos[v];
+    }
 #pragma omp parallel for schedule(static)
     for (int v = 0; v < n; ++v)
         if (moves[v]) mesh.place(v, newPos[v], newClosest[v]);
@@ -180,11 +194,8 @@ void step(ValenceMesh& mesh, Relaxation& s, bool withField, std::vector<Vec3>& o
 void safetyNet(ValenceMesh& mesh, SagGuard& sag, Relaxation& s, const std::vector<Vec3>& oldPos,
                const std::vector<MeshVertex>& oldData)
 {
-    const int faceCount = mesh.faceCount();
-    std::vector<int> check;
-    for (int f = 0; f < faceCount; ++f)
-        if (mesh.faceAlive(f)) check.push_back(f);
-    std::vector<char> wrong(faceCount);
+    std::vector<int> check = s.aliveFaces;
+    std::vector<char>& wrong = s.wrong;
     for (;;) {
 #pragma omp parallel for schedule(static)
         for (int k = 0; k < static_cast<int>(check.size()); ++k) {
