@@ -12,7 +12,8 @@
 namespace fieldcvt {
 
 //! Per vertex, the first (lowest-index) referenced vertex at exactly its coordinates (-0 = +0);
-//! unreferenced vertices map to themselves. `merged` counts the vertices mapped to another.
+//! unreferenced vertices map to themselves. `merged` counts the vertices mapped to another. The
+//! referenced points must be finite (found by sorting them).
 std::vector<int> exactDuplicateRepresentatives(const std::vector<Vec3>& points, const std::vector<char>& referenced, int& merged);
 
 //! Per half-edge 3 f + k, the half-edge glued to it: the other side of an edge with exactly two
