@@ -4,16 +4,18 @@
 # is as read), so the same input, parameters and seed give the same vertex and face counts and
 # the same figures (to 3 significant digits) through meshlabserver and through `fcvt remesh`.
 # Inputs: bunny (double PLY, 5000 vertices), a real-world scan (many_small_holes, float PLY,
-# N = max(500, V/4)) and a CAD part (casting.off at 637, when ../shared/realworld is there).
+# N = max(500, V/4)) and a CAD part (casting.off at 637), both of resources/realworld.
 # Usage: filter_equals_cli.sh SOURCE_DIR PLUGIN_SO WORK_DIR FCVT_CLI
 set -euo pipefail
 FCVT_SOURCE_DIR="$1"; plugin="$2"; work="$3"; cli="$4"
 source "$FCVT_SOURCE_DIR/tests/meshlab/common.sh"
 
 rm -rf "$work/out"; mkdir -p "$work/out"
+realworld="$FCVT_SOURCE_DIR/resources/realworld"
+for f in many_small_holes.ply casting.off; do
+  [ -f "$realworld/$f" ] || fail "no $realworld/$f (the project's real-world meshes, resources/realworld/README.md)"
+done
 server="$(stage_meshlab "$work/stage" "$plugin")"
-realworld="$FCVT_SOURCE_DIR/../shared/realworld/many_small_holes.ply"
-[ -f "$realworld" ] || realworld="$FCVT_SOURCE_DIR/resources/many_small_holes.ply"
 
 compare() {  # NAME INPUT N
   local name="$1" input="$2" n="$3"
@@ -44,13 +46,10 @@ sys.exit(1 if bad else 0)
 PY
 }
 compare bunny "$FCVT_SOURCE_DIR/resources/bunny.ply" 5000
-compare many_small_holes "$realworld" 501
+compare many_small_holes "$realworld/many_small_holes.ply" 501
 # A closed CAD part torn at this count, where the thin-part passes (side-aware cells among them)
 # choose between outcomes that differ by little: any difference in the parameters (lambda as
 # MeshLab's float) made the filter keep another pass than the CLI.
-casting="$FCVT_SOURCE_DIR/../shared/realworld/casting.off"
-if [ -f "$casting" ]; then
-  "$cli" convert "$casting" "$work/out/casting-input.ply" --quiet || fail "casting: fcvt convert failed"
-  compare casting "$work/out/casting-input.ply" 637
-fi
+"$cli" convert "$realworld/casting.off" "$work/out/casting-input.ply" --quiet || fail "casting: fcvt convert failed"
+compare casting "$work/out/casting-input.ply" 637
 echo "PASS"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 32, item 1, on the real-world meshes of ../shared/realworld: with the default options of
+"""Issue 32, item 1, on the real-world meshes of resources/realworld: with the default options of
 `fcvt remesh IN OUT.ply --vertices N`, at N = max(500, V/4) and N = max(300, V/8) (V: the input's
 vertices as `fcvt metrics` reads them), no zero-area face, no angle under 15 degrees and at most
 0.5 % of the triangles with an angle under 30 degrees (`fcvt metrics OUT --json`), borders included.
