@@ -1,6 +1,6 @@
 # Debian package of the MeshLab plugin: `cpack` in the build directory writes
 # meshlab-plugin-fcvt_<version>_amd64.deb, which installs libfilter_fcvt.so into Debian's MeshLab
-# plugin directory (apt-get install ./meshlab-plugin-fcvt_*.deb).
+# plugin directory (apt-get install ./meshlab-plugin-fcvt_*.deb), and its copyright file.
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME meshlab-plugin-fcvt)
 # The plugin is built against one MeshLab's headers and ABI: it needs exactly that MeshLab
@@ -36,6 +36,10 @@ else()
   set(CPACK_DEBIAN_PACKAGE_DEPENDS
       "${_fcvt_ml_range}, libgomp1, libqt5core5a, libqt5gui5, libqt5widgets5, libqt5opengl5, libqt5xml5")
 endif()
-# Only the plugin component goes into the package.
+# Debian policy 12.5: every package ships its copyright file, uncompressed, in its doc directory
+# (machine-readable, DEP-5; the project is GPL-3+, the LICENSE file at the top).
+install(FILES "${CMAKE_CURRENT_LIST_DIR}/debian-copyright" DESTINATION "share/doc/${CPACK_PACKAGE_NAME}"
+        RENAME copyright PERMISSIONS OWNER_READ OWNER_WRITE GROUP_READ WORLD_READ COMPONENT meshlab_plugin)
+# Only the plugin component (the plugin and its copyright file) goes into the package.
 set(CPACK_INSTALL_CMAKE_PROJECTS "${CMAKE_BINARY_DIR};${PROJECT_NAME};meshlab_plugin;/")
 include(CPack)

@@ -2,7 +2,8 @@
 # debian13_package / forky_package: scripts/package-debian.sh builds the release's .deb in a
 # fresh root of that release (BUILD/<tag>-root); then the test host fcvt-meshlab-host is built in the same root and
 # installed there as /usr/local/bin/fcvt-meshlab-host. Checks the package's control data: it
-# depends on exactly the release's MeshLab (2022.02 or 2025.07) and not on 2020.09, and holds only the plugin. Leaves "ok" (or the
+# depends on exactly the release's MeshLab (2022.02 or 2025.07) and not on 2020.09, and holds only the plugin
+# and its copyright file (DEP-5, GPL-3+: tests/package/check_copyright.sh). Leaves "ok" (or the
 # reason it skipped) in BUILD/<tag>-out/status for the release's other tests.
 # Usage: package.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -32,9 +33,11 @@ case "$depends" in
   *) fail "the package must depend on meshlab (>= $meshlab_release~), meshlab (<< $meshlab_next)" ;;
 esac
 case "$depends" in *2020.*) fail "the $release package depends on MeshLab 2020.09" ;; esac
-contents="$(dpkg-deb -c "$deb" | grep -v '/$' | awk '{print $NF}')"
-[ "$contents" = "./usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_fcvt.so" ] \
-  || fail "the package should hold only the plugin: $contents"
+contents="$(dpkg-deb -c "$deb" | grep -v '/$' | awk '{print $NF}' | sort)"
+expected="$(printf '%s\n' ./usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_fcvt.so \
+  ./usr/share/doc/meshlab-plugin-fcvt/copyright | sort)"
+[ "$contents" = "$expected" ] || fail "the package should hold only the plugin and its copyright file: $contents"
+bash "$SOURCE/tests/package/check_copyright.sh" "$deb" || fail "the package's copyright file"
 
 t=$(date +%s)
 in_root cmake --build "$BUILD/$tag-build" -j "$(nproc)" --target fcvt_meshlab_host >"$out/host-build.log" 2>&1 \

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The Debian package: cpack builds meshlab-plugin-fcvt_<version>_amd64.deb; its control data
-# depends on MeshLab 2020.09; unpacked into a throw-away root (never the system), its plugin
-# loads into a staged meshlabserver, which lists our filter.
+# depends on MeshLab 2020.09; it holds the plugin and its copyright file (DEP-5, GPL-3+:
+# tests/package/check_copyright.sh); unpacked into a throw-away root (never the system), its
+# plugin loads into a staged meshlabserver, which lists our filter.
 # Usage: deb_installs_and_loads.sh BUILD_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 build="$1"
@@ -24,11 +25,13 @@ esac
 dpkg-deb -x "$deb" "$work/root"
 plugin="$work/root/usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_fcvt.so"
 [ -f "$plugin" ] || { echo "FAIL: $plugin missing; package contents:" >&2; dpkg-deb -c "$deb" >&2; exit 1; }
-if dpkg-deb -c "$deb" | grep -v "/$" | grep -v "libfilter_fcvt.so" | grep -q .; then
-  echo "FAIL: the package holds more than the plugin:" >&2
+if dpkg-deb -c "$deb" | grep -v "/$" | grep -v "libfilter_fcvt.so" | grep -v "/usr/share/doc/meshlab-plugin-fcvt/copyright$" \
+    | grep -q .; then
+  echo "FAIL: the package holds more than the plugin and its copyright file:" >&2
   dpkg-deb -c "$deb" >&2
   exit 1
 fi
+bash "$source/tests/package/check_copyright.sh" "$deb"
 
 bash "$source/scripts/stage-meshlab.sh" "$work/stage" "$plugin" >/dev/null
 xvfb-run -a "$work/stage/bin/meshlabserver" -d "$work/filters.txt" >"$work/server.log" 2>&1 || true
