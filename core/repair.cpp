@@ -178,6 +178,11 @@ std::vector<Face> weldVertices(const TriMesh& input, std::vector<Vec3>& pos, con
                                double toInputLength, const RepairParams& params, std::vector<int>& rep, RepairReport& report)
 {
     const int n = input.vertexCount();
+    if (!params.mergeVertices) {
+        rep.resize(size_t(n));
+        std::iota(rep.begin(), rep.end(), 0);
+        return input.faces;
+    }
     rep = exactDuplicateRepresentatives(pos, referenced, report.mergedDuplicateVertices);
     std::vector<Face> faces;
     faces.reserve(input.faces.size());
@@ -572,7 +577,8 @@ TriMesh repairMesh(const TriMesh& input, const RepairParams& params, RepairRepor
     for (int v = 0; v < working; ++v)
         if (index[v] == 0) {
             index[v] = out.vertexCount();
-            out.vertices.push_back(input.vertices[v < n ? v : copySource[v - n]]);
+            report.vertexSource.push_back(v < n ? v : copySource[v - n]);
+            out.vertices.push_back(input.vertices[size_t(report.vertexSource.back())]);
         }
     for (int f = 0; f < faceCount; ++f)
         if (keepFace[f])

@@ -36,6 +36,10 @@ namespace fieldcvt {
 struct RepairParams {
     //! Welding distance as a fraction of the mean edge length of the input.
     double weldTolerance = 1e-3;
+    //! false: no vertex is merged with another (exact duplicates, welds, T-junctions): for a part
+    //! cut out of a mesh (region.h), whose vertices must stay those the rest of the mesh shares,
+    //! and for a surface repaired that way already, whose split copies a merge would glue back.
+    bool mergeVertices = true;
     //! Output vertex count the surface will be remeshed with; 0 = no component is dropped.
     int vertexBudget = 0;
     //! A component is dropped when it would get fewer samples than this (vertexBudget × its
@@ -81,6 +85,8 @@ struct RepairReport {
     std::vector<std::string> information;
     //! Per input vertex: its index in the repaired mesh, -1 if removed.
     std::vector<int> vertexMap;
+    //! Per vertex of the repaired mesh: the input vertex it is or is a copy of (a split).
+    std::vector<int> vertexSource;
 };
 
 //! The repaired copy of `input` (see the top of this file).
