@@ -16,6 +16,13 @@ struct Error : std::runtime_error {
 struct InvalidInputError : Error {
     using Error::Error;
 };
+//! The input is a valid mesh that is not a manifold, orientable surface: an edge of more than two
+//! faces or a non-orientable component, which the strict check (mesh_check.h) refuses and the
+//! repair (repair.h) resolves. A front end that writes the mesh as read (fcvt convert) may
+//! take it as a warning instead.
+struct SurfaceTopologyError : InvalidInputError {
+    using InvalidInputError::InvalidInputError;
+};
 //! A mesh file cannot be read or written.
 struct IOError : Error {
     using Error::Error;

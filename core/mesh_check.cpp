@@ -102,9 +102,9 @@ void refuseNonManifoldEdges(const TriMesh& input, const EdgeTable& edges)
     for (int e = 0; e < edges.edgeCount(); ++e)
         if (edges.isNonManifold(e) && nonManifold++ == 0) first = e;
     if (nonManifold > 0)
-        throw InvalidInputError(std::to_string(nonManifold) +
-                                " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
-                                vertexAt(input, edges.ends[first][0]) + " and " + vertexAt(input, edges.ends[first][1]));
+        throw SurfaceTopologyError(std::to_string(nonManifold) +
+                                   " non-manifold edge(s) (more than two faces on one edge), the first between vertices " +
+                                   vertexAt(input, edges.ends[first][0]) + " and " + vertexAt(input, edges.ends[first][1]));
 }
 
 //! The information and notes of what the preparation changed.
@@ -184,7 +184,7 @@ TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired)
     const std::vector<int> partner = glueTwoSidedEdges(edges, faceCount);
     const Orientation orientation = orientByWalk(faces, partner, [&](int h) {
         const int g = partner[h] / 3, a = faces[h / 3][h % 3], b = faces[h / 3][(h % 3 + 1) % 3];
-        throw InvalidInputError(
+        throw SurfaceTopologyError(
             "a connected component is not orientable (like a Moebius strip, no consistent orientation "
             "exists): input faces " +
             std::to_string(faceOrigin[h / 3]) + " and " + std::to_string(faceOrigin[g]) +

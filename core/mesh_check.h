@@ -33,10 +33,11 @@ struct InputReport {
 //! of each connected component made consistent with its first face; vertices whose faces form
 //! several fans split into one vertex per fan; unreferenced vertices removed (the clean mesh
 //! keeps the input's vertex order, split copies come last). Throws InvalidInputError (one line:
-//! what and where) for an empty mesh, a point cloud, an out-of-range index, a non-finite
-//! coordinate, a non-manifold edge or a non-orientable component. `repaired`: the input is
-//! repairMesh's output (repair.h), which has merged duplicate vertices (and split some again on
-//! purpose: not merged here) and removed duplicate faces (not searched for here).
+//! what and where) for an empty mesh, a point cloud, an out-of-range index or a non-finite
+//! coordinate, and SurfaceTopologyError (errors.h) for a non-manifold edge or a non-orientable
+//! component. `repaired`: the input is repairMesh's output (repair.h), which has merged
+//! duplicate vertices (and split some again on purpose: not merged here) and removed duplicate
+//! faces (not searched for here).
 TriMesh prepareInput(const TriMesh& input, InputReport& report, bool repaired = false);
 
 }  // namespace fieldcvt
