@@ -3,6 +3,7 @@
 
 #include "disjoint_sets.h"
 #include "errors.h"
+#include "mesh_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,6 +88,23 @@ int closePinches(const TriMesh& mesh, std::vector<char>& selected)
     return added;
 }
 
+int takeInNonManifoldEdges(const TriMesh& mesh, std::vector<char>& selected)
+{
+    const EdgeTable edges = buildEdgeTable(mesh, RepeatedVertexFaces::Skip);
+    int added = 0;
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        if (!edges.isNonManifold(e)) continue;
+        bool any = false;
+        for (int i = 0; i < edges.faceCount(e); ++i) any = any || selected[size_t(edges.face(e, i))];
+        if (!any) continue;
+        for (int i = 0; i < edges.faceCount(e); ++i) {
+            char& s = selected[size_t(edges.face(e, i))];
+            if (!s) s = 1, ++added;
+        }
+    }
+    return added;
+}
+
 RegionSubmesh extractRegion(const TriMesh& mesh, const std::vector<int>& faces)
 {
     RegionSubmesh region;
@@ -98,6 +116,7 @@ RegionSubmesh extractRegion(const TriMesh& mesh, const std::vector<int>& faces)
             if (added) {
                 region.mesh.vertices.push_back(mesh.vertices[size_t(v)]);
                 region.originalVertex.push_back(v);
+                region.sourceVertex.push_back(v);
             }
             v = it->second;
         }
@@ -189,9 +208,10 @@ StitchedMesh stitchRegions(const TriMesh& input, const std::vector<char>& select
     for (int f = 0; f < input.faceCount(); ++f)
         if (!selected[size_t(f)])
             for (int v : input.faces[size_t(f)]) keep[size_t(v)] = 1;
+    const int n = input.vertexCount();
     for (const RegionPatch& patch : patches)
         for (int v : patch.original)
-            if (v >= 0) keep[size_t(v)] = 1;
+            if (v >= 0 && v < n) keep[size_t(v)] = 1;
     StitchedMesh out;
     std::vector<int> index(input.vertices.size(), -1);
     for (size_t v = 0; v < input.vertices.size(); ++v)
@@ -207,14 +227,22 @@ StitchedMesh stitchRegions(const TriMesh& input, const std::vector<char>& select
             out.mesh.faces.push_back(t);
             out.faceOrigin.push_back(f);
         }
+    std::map<int, int> copies;  // a repair's copy id -> its output vertex
     for (const RegionPatch& patch : patches) {
         std::vector<int> local(patch.mesh.vertices.size());
         for (size_t v = 0; v < local.size(); ++v) {
-            if (patch.original[v] >= 0) {
-                local[v] = index[size_t(patch.original[v])];
+            const int original = patch.original[v];
+            if (original >= 0 && original < n) {
+                local[v] = index[size_t(original)];
                 continue;
             }
-            local[v] = out.mesh.vertexCount();
+            if (original >= n) {
+                const auto [it, added] = copies.insert({original, out.mesh.vertexCount()});
+                local[v] = it->second;
+                if (!added) continue;
+            } else {
+                local[v] = out.mesh.vertexCount();
+            }
             out.mesh.vertices.push_back(patch.mesh.vertices[v]);
             out.vertexOrigin.push_back(-1);
         }

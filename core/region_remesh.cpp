@@ -68,17 +68,23 @@ RemeshParams pieceParams(const RemeshParams& params, const RegionSubmesh& region
     p.vertexCount = std::clamp(int(std::lround(count)), kMinVertexCount, kMaxVertexCount);
     p.closeHolesUnder = 0;  // the piece's border is the seam with the kept faces: it stays open
     p.exactCount = true;    // the pieces split the vertex count between them by area
+    if (region.repaired) {
+        // Repaired already: a merge of its split copies would make it non-manifold again, and a
+        // part dropped now would not be on the border the patch is pinned to.
+        p.repairParams.mergeVertices = false;
+        p.repairParams.minComponentSamples = 0;
+    }
     if (params.density == DensitySource::Uniform && !mu.empty()) {
         p.density = DensitySource::PerVertex;
         p.vertexDensity = std::move(mu);
     } else if (params.density == DensitySource::PerVertex) {
         p.vertexDensity.clear();
-        for (int v : region.originalVertex)
+        for (int v : region.sourceVertex)
             p.vertexDensity.push_back(size_t(v) < params.vertexDensity.size() ? params.vertexDensity[size_t(v)] : 0.0);
     }
     if (params.fieldSource == FieldSource::User) {
         p.userDirections.clear();
-        for (int v : region.originalVertex)
+        for (int v : region.sourceVertex)
             p.userDirections.push_back(size_t(v) < params.userDirections.size() ? params.userDirections[size_t(v)]
                                                                                 : Vec3::Zero());
     }
@@ -93,7 +99,8 @@ RemeshParams pieceParams(const RemeshParams& params, const RegionSubmesh& region
 struct PieceOutcome {
     bool remeshed = false;
     RegionPatch patch;
-    std::string reason;  //!< why not remeshed
+    std::string reason;         //!< why not remeshed
+    bool moreVertices = false;  //!< more vertices may help
 };
 
 //! One piece: remesh(), pin its border, optimise the seam, check it. `result` collects the run's
@@ -127,8 +134,7 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
             mu.clear();
     }
     if (count < kMinVertexCount) {
-        outcome.reason =
-            format("it holds %.2g vertices at the target edge length %.4g, fewer than 4: kept as it is", count, target);
+        outcome.reason = format("it holds %.2g vertices at the target edge length %.4g, fewer than 4", count, target);
         return outcome;
     }
     if (count > kMaxVertexCount) throw InvalidInputError(format("a region needs %.3g vertices: too many", count));
@@ -137,10 +143,10 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
     try {
         run = remesh(region.mesh, p, progress);
     } catch (const SolverError& e) {
-        outcome.reason = std::string(e.what()) + ": kept as it is";
+        outcome.reason = e.what();
         return outcome;
     } catch (const InvalidInputError& e) {
-        outcome.reason = std::string(e.what()) + ": kept as it is";
+        outcome.reason = e.what();
         return outcome;
     }
     for (const StageTime& t : run.stageTimes) {
@@ -165,7 +171,8 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
     }
     std::string failure;
     if (!pinBorder(region, outcome.patch.mesh, outcome.patch.original, failure)) {
-        outcome.reason = failure + ": kept as it is (try more vertices)";
+        outcome.reason = failure;
+        outcome.moreVertices = true;
         return outcome;
     }
     if (regionParams.seamOptimisation && params.valenceOptimization) {
@@ -179,7 +186,7 @@ PieceOutcome remeshPiece(const RegionSubmesh& region, const RemeshParams& params
             if (outcome.patch.original[v] < 0)
                 outcome.patch.mesh.vertices[v] = outcome.patch.mesh.vertices[v].cast<float>().cast<double>();
     if (!patchMatchesBorder(region, outcome.patch)) {
-        outcome.reason = "the remeshed faces do not meet the region's border edge to edge: kept as it is";
+        outcome.reason = "the remeshed faces do not meet the region's border edge to edge";
         return outcome;
     }
     outcome.remeshed = true;
@@ -202,6 +209,16 @@ TriMesh facesWhere(const TriMesh& mesh, Take take)
         part.faces.push_back(t);
     }
     return part;
+}
+
+void appendMesh(TriMesh& to, const TriMesh& from)
+{
+    const int offset = to.vertexCount();
+    to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+    for (Face t : from.faces) {
+        for (int& v : t) v += offset;
+        to.faces.push_back(t);
+    }
 }
 
 //! Table 2's figures of the new faces (`interior`: only those without a border vertex).
@@ -229,6 +246,73 @@ void checkSelection(const TriMesh& input, const std::vector<char>& selected, con
     if (!params.initialSamples.empty()) throw InvalidInputError("initial samples cannot be combined with a region");
 }
 
+//! The selection closed where it touches itself at a vertex (closePinches) and around the
+//! non-manifold edges on its border (takeInNonManifoldEdges), until neither adds a face: each
+//! can make work for the other. Returns the faces added; a note says why.
+int closeSelection(const TriMesh& input, std::vector<char>& closed, std::vector<std::string>& notes)
+{
+    int pinches = 0, nonManifold = 0;
+    for (int added = 1; added > 0;) {
+        pinches += closePinches(input, closed);
+        added = takeInNonManifoldEdges(input, closed);
+        nonManifold += added;
+    }
+    if (pinches > 0)
+        notes.push_back("the selection touched itself at a vertex: " + std::to_string(pinches) +
+                        " faces around such vertices were added to it");
+    if (nonManifold > 0)
+        notes.push_back("the selection's border ran along non-manifold edges (more than two faces): their other " +
+                        std::to_string(nonManifold) + " faces were added to it, and the edges repaired inside the region");
+    return pinches + nonManifold;
+}
+
+//! A region made ready to remesh: repaired as remesh() repairs a whole mesh if it is not a
+//! manifold, oriented surface (repairRegion), then oriented as the kept faces around it (`conflict`:
+//! why that cannot agree with them all). False, with `reason`, when the repair fails.
+bool prepareRegion(RegionSubmesh& region, const KeptEdges& kept, double target, int& nextCopyId,
+                   std::vector<std::string>& warnings, std::string& reason, std::string& conflict)
+{
+    if (!regionIsClean(region)) {
+        // The budget of the whole-mesh repair: the piece's vertices at the target edge length.
+        const double count = 2 / std::sqrt(3.0) * surfaceArea(region.mesh) / (target * target);
+        try {
+            const RepairReport repair = repairRegion(region, kept, int(std::min(count, double(kMaxVertexCount))), nextCopyId);
+            warnings.insert(warnings.end(), repair.notes.begin(), repair.notes.end());
+        } catch (const InvalidInputError& e) {
+            reason = std::string("its repair failed: ") + e.what();
+            return false;
+        }
+    }
+    int against = 0;
+    if (const int reversed = orientRegionToKept(region, kept, &against))
+        warnings.push_back("reversed " + std::to_string(reversed) + " of its faces to agree with the faces kept around it");
+    if (against > 0) {
+        conflict = "the faces kept around it run " + std::to_string(against) +
+                   " of its border edges the other way than the rest: the input is not consistently oriented there "
+                   "(or not orientable through the region)";
+        warnings.push_back(conflict);
+    }
+    return true;
+}
+
+//! The last word on a region remesh: manifold and oriented, except for the input's own faults at
+//! the faces kept outside the selection (a warning); anything else throws InvalidInputError naming
+//! the faults and their likely `causes` (pieces left as they were, orientation conflicts).
+void checkStitched(const TriMesh& input, const std::vector<char>& selected, const StitchedMesh& stitched,
+                   const std::vector<std::string>& causes, std::vector<std::string>& warnings)
+{
+    SurfaceFaults kept, elsewhere;
+    stitchedFaults(input, selected, stitched, kept, elsewhere);
+    if (elsewhere.any()) {
+        std::string message = "the remeshed region would leave " + elsewhere.describe() + " in the output";
+        for (size_t i = 0; i < causes.size(); ++i) message += (i == 0 ? " (" : "; ") + causes[i];
+        throw InvalidInputError(message + (causes.empty() ? "" : ")"));
+    }
+    if (kept.any())
+        warnings.push_back("the output keeps the input's own " + kept.describe() +
+                           " at the faces kept outside the region (select those faces to have them repaired)");
+}
+
 }  // namespace
 
 RegionRemeshResult remeshRegion(const TriMesh& input, const std::vector<char>& selected, const RemeshParams& params,
@@ -249,10 +333,8 @@ RegionRemeshResult remeshRegion(const TriMesh& input, const std::vector<char>& s
         return out;
     }
     std::vector<char> closed = selected;
-    out.addedFaces = closePinches(input, closed);
-    if (out.addedFaces > 0)
-        result.notes.push_back("the selection touched itself at a vertex: " + std::to_string(out.addedFaces) +
-                               " faces around such vertices were added to it");
+    out.addedFaces = closeSelection(input, closed, result.notes);
+    const KeptEdges kept = keptEdges(input, closed);
     const std::vector<std::vector<int>> pieces = regionComponents(input, closed);
     out.regions = int(pieces.size());
     double area = 0;
@@ -261,42 +343,77 @@ RegionRemeshResult remeshRegion(const TriMesh& input, const std::vector<char>& s
     out.targetLength = std::sqrt(2 * area / (std::sqrt(3.0) * params.vertexCount));
     std::vector<char> remeshed = closed;  // the faces replaced: pieces kept as they are drop out
     std::vector<RegionPatch> patches;
+    std::vector<std::string> causes;  // of faults a refusal names: pieces kept as they are, orientation conflicts
+    std::vector<char> repairedFaces(input.faces.size(), 0);
+    TriMesh repairedSurfaces;  // what the distances of repaired pieces are measured against
+    int nextCopyId = input.vertexCount();
     for (size_t i = 0; i < pieces.size(); ++i) {
-        const RegionSubmesh region = extractRegion(input, pieces[i]);
+        const std::string name = pieces.size() > 1 ? "region " + std::to_string(i + 1) + " of " + std::to_string(pieces.size()) +
+                                                         " (" + std::to_string(pieces[i].size()) + " faces): "
+                                                   : "region (" + std::to_string(pieces[i].size()) + " faces): ";
         const Progress pieceProgress = [&](const std::string& stage, double percent) {
             return !progress || progress(stage, (double(i) + percent / 100) / double(pieces.size()) * 100);
         };
         std::vector<std::string> warnings;
-        PieceOutcome piece =
-            remeshPiece(region, params, regionParams, out.targetLength, pieceProgress, result, out.worstBorderRatio, warnings);
-        const std::string name = pieces.size() > 1 ? "region " + std::to_string(i + 1) + " of " + std::to_string(pieces.size()) +
-                                                         " (" + std::to_string(pieces[i].size()) + " faces): "
-                                                   : "region (" + std::to_string(pieces[i].size()) + " faces): ";
-        if (!piece.remeshed) warnings.push_back(piece.reason);
-        for (const std::string& w : warnings) result.warnings.push_back(name + w);
+        PieceOutcome piece;
+        RegionSubmesh region = extractRegion(input, pieces[i]);
+        std::string conflict;
+        if (prepareRegion(region, kept, out.targetLength, nextCopyId, warnings, piece.reason, conflict)) {
+            if (!region.repaired) {
+                piece = remeshPiece(region, params, regionParams, out.targetLength, pieceProgress, result, out.worstBorderRatio,
+                                    warnings);
+            } else {
+                // Part by part: one that cannot be remeshed (a strip the repair cut off, too small
+                // for the target) stays as repaired, a manifold, oriented surface still.
+                const std::vector<RegionSubmesh> parts = regionParts(region);
+                for (size_t k = 0; k < parts.size(); ++k) {
+                    PieceOutcome part = remeshPiece(parts[k], params, regionParams, out.targetLength, pieceProgress, result,
+                                                    out.worstBorderRatio, warnings);
+                    if (!part.remeshed) {
+                        warnings.push_back("its part " + std::to_string(k + 1) + " of " + std::to_string(parts.size()) + " (" +
+                                           std::to_string(parts[k].mesh.faceCount()) + " faces): " + part.reason +
+                                           ": kept as repaired");
+                        part.patch = {parts[k].mesh, parts[k].originalVertex};
+                    }
+                    patches.push_back(std::move(part.patch));
+                }
+                piece.remeshed = true;
+                for (int f : pieces[i]) repairedFaces[size_t(f)] = 1;
+                appendMesh(repairedSurfaces, region.mesh);
+            }
+        }
+        if (!piece.remeshed) {
+            warnings.push_back(piece.reason + ": kept as it is" + (piece.moreVertices ? " (try more vertices)" : ""));
+            causes.push_back(name + piece.reason + (piece.moreVertices ? " (try more vertices)" : ""));
+        }
+        if (!conflict.empty()) causes.push_back(name + conflict);
+        for (size_t w = 0; w < warnings.size(); ++w)  // once: the parts of a repaired piece may repeat one
+            if (std::find(warnings.begin(), warnings.begin() + long(w), warnings[w]) == warnings.begin() + long(w))
+                result.warnings.push_back(name + warnings[w]);
         if (!piece.remeshed) {
             ++out.keptRegions;
             for (int f : pieces[i]) remeshed[size_t(f)] = 0;
             continue;
         }
         for (char b : region.border) out.borderVertices += b;
-        patches.push_back(std::move(piece.patch));
+        if (!region.repaired) patches.push_back(std::move(piece.patch));
     }
     StitchedMesh stitched = stitchRegions(input, remeshed, patches);
+    checkStitched(input, closed, stitched, causes, result.warnings);
     result.metrics = newFaceMetrics(stitched, false);
     out.interiorMetrics = newFaceMetrics(stitched, true);
     if (params.computeDistances && !patches.empty()) {
-        // Against the selected input faces that were replaced.
+        // Against the selected input faces that were replaced, as repaired where they were (the
+        // whole-mesh remesh measures against its repaired input too: a dropped fin is no error).
         const TriMesh newFaces = facesWhere(stitched.mesh, [&](size_t f) { return stitched.faceOrigin[f] < 0; });
-        const TriMesh oldFaces = facesWhere(input, [&](size_t f) { return remeshed[f] != 0; });
+        TriMesh oldFaces = facesWhere(input, [&](size_t f) { return remeshed[f] != 0 && !repairedFaces[f]; });
+        appendMesh(oldFaces, repairedSurfaces);
         const DistanceMetrics d = computeDistance(newFaces, oldFaces, std::max(1000, params.distanceSamples));
         result.metrics.dRms = d.rms;
         result.metrics.dH = d.hausdorff;
     }
     result.inputTopology = computeTopology(input);
     result.outputTopology = computeTopology(stitched.mesh);
-    if (result.inputTopology.manifold() && !result.outputTopology.manifold())
-        result.warnings.push_back("the output is not manifold");
     result.mesh = std::move(stitched.mesh);
     out.vertexOrigin = std::move(stitched.vertexOrigin);
     out.faceOrigin = std::move(stitched.faceOrigin);

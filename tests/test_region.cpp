@@ -298,3 +298,197 @@ TEST(Region, APieceTouchingItselfAtAVertexIsClosedThere)
     EXPECT_EQ(out.keptRegions, 0) << warnings(out);
     expectStitched(grid, closed, out);
 }
+
+// Issue 50, item 4: a selection that is not a manifold, oriented surface is repaired as the whole
+// mesh would be, or refused; the kept faces' own faults are kept, and said.
+namespace {
+
+//! `mesh` with a fin of `rows` strips of two faces standing out of its edge a-b (which then has
+//! three faces), each fin face selected as `finSelected` in `selected` (grown to match).
+TriMesh withFin(TriMesh mesh, int a, int b, int rows, std::vector<char>& selected, char finSelected)
+{
+    int prevA = a, prevB = b;
+    for (int r = 1; r <= rows; ++r) {
+        mesh.vertices.push_back(mesh.vertices[size_t(a)] * (1 + 0.15 * r));
+        mesh.vertices.push_back(mesh.vertices[size_t(b)] * (1 + 0.15 * r));
+        const int na = mesh.vertexCount() - 2, nb = mesh.vertexCount() - 1;
+        mesh.faces.push_back({prevA, prevB, nb});
+        mesh.faces.push_back({prevA, nb, na});
+        selected.push_back(finSelected);
+        selected.push_back(finSelected);
+        prevA = na, prevB = nb;
+    }
+    return mesh;
+}
+
+//! An edge of the face nearest to `direction` (inside a cap around it).
+std::pair<int, int> edgeToward(const TriMesh& mesh, const Vec3& direction)
+{
+    size_t best = 0;
+    double nearest = 1e300;
+    for (size_t f = 0; f < mesh.faces.size(); ++f) {
+        const Face& t = mesh.faces[f];
+        const Vec3 c = (mesh.vertices[size_t(t[0])] + mesh.vertices[size_t(t[1])] + mesh.vertices[size_t(t[2])]) / 3;
+        if ((c.normalized() - direction).norm() < nearest) nearest = (c.normalized() - direction).norm(), best = f;
+    }
+    return {mesh.faces[best][0], mesh.faces[best][1]};
+}
+
+//! No fault at all, and every face not selected kept bit for bit.
+void expectCleanAndKept(const TriMesh& input, const std::vector<char>& selected, const RegionRemeshResult& out)
+{
+    const TopologySummary got = computeTopology(out.result.mesh);
+    EXPECT_EQ(got.nonManifoldEdges, 0);
+    EXPECT_EQ(got.nonManifoldVertices, 0);
+    EXPECT_TRUE(got.orientable);
+    std::vector<char> seen(input.faces.size(), 0);
+    for (size_t f = 0; f < out.faceOrigin.size(); ++f) {
+        if (out.faceOrigin[f] < 0) continue;
+        seen[size_t(out.faceOrigin[f])] = 1;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_TRUE(sameBits(out.result.mesh.vertices[size_t(out.result.mesh.faces[f][k])],
+                                 input.vertices[size_t(input.faces[size_t(out.faceOrigin[f])][k])]));
+    }
+    for (size_t f = 0; f < selected.size(); ++f)
+        if (!selected[f]) EXPECT_TRUE(seen[f]) << "face " << f << " was not selected but is gone";
+}
+
+}  // namespace
+
+TEST(RegionRepair, ANonManifoldEdgeInsideTheSelectionIsRepaired)
+{
+    for (int rows : {1, 3}) {  // a fin too small for the target (dropped), one kept
+        const TriMesh sphere = icosphere(3);
+        std::vector<char> selected = capSelection(sphere, Vec3(0, 0, 1), kPi / 3);
+        const auto [a, b] = edgeToward(sphere, Vec3(0, 0, 1));
+        const TriMesh mesh = withFin(sphere, a, b, rows, selected, 1);
+        ASSERT_EQ(computeTopology(mesh).nonManifoldEdges, 1);
+        const RegionRemeshResult out = remeshRegion(mesh, selected, params(300));
+        EXPECT_EQ(out.keptRegions, 0) << warnings(out);
+        EXPECT_NE(warnings(out).find("non-manifold edges (more than two faces) split"), std::string::npos) << warnings(out);
+        expectCleanAndKept(mesh, selected, out);
+        // Dropped, the fin leaves the sphere closed; kept, it is one border loop of its own.
+        EXPECT_EQ(computeTopology(out.result.mesh).boundaryLoops, rows == 1 ? 0 : 1) << warnings(out);
+    }
+}
+
+TEST(RegionRepair, ANonManifoldEdgeOnTheBorderIsTakenIn)
+{
+    const TriMesh sphere = icosphere(3);
+    std::vector<char> selected = capSelection(sphere, Vec3(0, 0, 1), kPi / 3);
+    // A fin, not selected, on an edge inside the cap; and one on an edge of the cap's border.
+    const auto [a, b] = edgeToward(sphere, Vec3(0, 0, 1));
+    TriMesh mesh = withFin(sphere, a, b, 2, selected, 0);
+    std::map<std::pair<int, int>, std::vector<int>> faces;
+    for (int f = 0; f < sphere.faceCount(); ++f)
+        for (int k = 0; k < 3; ++k)
+            faces[std::minmax(sphere.faces[size_t(f)][k], sphere.faces[size_t(f)][(k + 1) % 3])].push_back(f);
+    for (const auto& [edge, two] : faces)
+        if (selected[size_t(two[0])] != selected[size_t(two[1])]) {
+            mesh = withFin(mesh, edge.first, edge.second, 2, selected, 1);
+            break;
+        }
+    std::vector<char> grown = selected;
+    EXPECT_EQ(takeInNonManifoldEdges(mesh, grown), 2) << "the first fin's face on the edge, the border's other face";
+    EXPECT_EQ(takeInNonManifoldEdges(mesh, grown), 0);
+    const RegionRemeshResult out = remeshRegion(mesh, selected, params(300));
+    EXPECT_GE(out.addedFaces, 2);
+    EXPECT_EQ(out.keptRegions, 0) << warnings(out);
+    std::vector<char> closed = selected;
+    closePinches(mesh, closed);
+    takeInNonManifoldEdges(mesh, closed);
+    closePinches(mesh, closed);
+    expectCleanAndKept(mesh, closed, out);
+}
+
+TEST(RegionRepair, RepairKeepsTheSeamVerticesAndNumbersTheCopies)
+{
+    const TriMesh sphere = icosphere(3);
+    std::vector<char> selected = capSelection(sphere, Vec3(0, 0, 1), kPi / 3);
+    const auto [a, b] = edgeToward(sphere, Vec3(0, 0, 1));
+    const TriMesh mesh = withFin(sphere, a, b, 3, selected, 1);
+    RegionSubmesh region = extractRegion(mesh, regionComponents(mesh, selected)[0]);
+    EXPECT_FALSE(regionIsClean(region));
+    const KeptEdges kept = keptEdges(mesh, selected);
+    int nextCopyId = mesh.vertexCount();
+    const RepairReport report = repairRegion(region, kept, 0, nextCopyId);
+    EXPECT_EQ(report.nonManifoldEdges, 1);
+    EXPECT_TRUE(regionIsClean(region));
+    EXPECT_TRUE(region.repaired);
+    EXPECT_EQ(nextCopyId, mesh.vertexCount() + 2) << "the fin's copies of a and b";
+    std::set<int> ids;
+    for (size_t v = 0; v < region.originalVertex.size(); ++v) {
+        EXPECT_TRUE(ids.insert(region.originalVertex[v]).second);
+        EXPECT_TRUE(sameBits(region.mesh.vertices[v], mesh.vertices[size_t(region.sourceVertex[v])]));
+    }
+    // Every border edge that meets the kept faces is between whole-mesh vertices, not copies:
+    // the seam, run the other way than the kept faces run it.
+    int seam = 0;
+    for (const std::vector<int>& loop : borderLoops(region.mesh))
+        for (size_t i = 0; i < loop.size(); ++i) {
+            const size_t u = size_t(loop[i]), w = size_t(loop[(i + 1) % loop.size()]);
+            if (!kept.touches(region.sourceVertex[u], region.sourceVertex[w])) continue;
+            ++seam;
+            EXPECT_EQ(region.originalVertex[u], region.sourceVertex[u]);
+            EXPECT_EQ(region.originalVertex[w], region.sourceVertex[w]);
+            EXPECT_TRUE(kept.runs(region.originalVertex[w], region.originalVertex[u]));
+        }
+    EXPECT_GT(seam, 20);
+    EXPECT_EQ(regionParts(region).size(), 2u) << "the cap and the fin";
+}
+
+TEST(RegionRepair, AFlippedSelectionIsOrientedAsTheKeptFaces)
+{
+    TriMesh sphere = icosphere(3);
+    const std::vector<char> selected = capSelection(sphere, Vec3(0, 0, 1), kPi / 3);
+    int flipped = 0;
+    for (size_t f = 0; f < sphere.faces.size(); ++f)
+        if (selected[f]) std::swap(sphere.faces[f][1], sphere.faces[f][2]), ++flipped;
+    RegionSubmesh region = extractRegion(sphere, regionComponents(sphere, selected)[0]);
+    EXPECT_TRUE(regionIsClean(region)) << "consistent in itself";
+    int against = -1;
+    EXPECT_EQ(orientRegionToKept(region, keptEdges(sphere, selected), &against), flipped);
+    EXPECT_EQ(against, 0);
+    const RegionRemeshResult out = remeshRegion(sphere, selected, params(300));
+    EXPECT_NE(warnings(out).find("reversed"), std::string::npos) << warnings(out);
+    expectCleanAndKept(sphere, selected, out);
+}
+
+TEST(RegionRepair, FaultsOfTheKeptFacesAreTheInputsOwn)
+{
+    const TriMesh sphere = icosphere(3);
+    std::vector<char> selected = capSelection(sphere, Vec3(0, 0, 1), kPi / 3);
+    const auto [a, b] = edgeToward(sphere, Vec3(0, 0, -1));  // far from the cap
+    const TriMesh mesh = withFin(sphere, a, b, 2, selected, 0);
+    const RegionRemeshResult out = remeshRegion(mesh, selected, params(300));
+    EXPECT_EQ(computeTopology(out.result.mesh).nonManifoldEdges, 1);
+    EXPECT_NE(warnings(out).find("the output keeps the input's own 1 non-manifold edge"), std::string::npos) << warnings(out);
+    SurfaceFaults kept, elsewhere;
+    stitchedFaults(mesh, selected, {out.result.mesh, out.vertexOrigin, out.faceOrigin}, kept, elsewhere);
+    EXPECT_EQ(kept.nonManifoldEdges, 1);
+    EXPECT_FALSE(elsewhere.any());
+}
+
+TEST(RegionRepair, AResultThatCannotBeOrientedIsRefused)
+{
+    // The band's one orientation fault lies inside the selection; the kept half cannot agree with
+    // both ends of any orientation of it.
+    const TriMesh band = moebius(48);
+    std::vector<char> selected(band.faces.size(), 0);
+    for (size_t f = 0; f < selected.size(); ++f) selected[f] = f < 16 || f >= selected.size() - 16;
+    try {
+        remeshRegion(band, selected, params(120));
+        FAIL() << "a result with an orientation fault was returned";
+    } catch (const InvalidInputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("edge between faces of opposite orientation"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << "one line";
+    }
+}
+
+TEST(RegionRepair, FaultsAreDescribedInWords)
+{
+    EXPECT_EQ((SurfaceFaults{1, 2, 0}.describe()), "1 non-manifold edge and 2 edges between faces of opposite orientation");
+    EXPECT_EQ((SurfaceFaults{2, 0, 1}.describe()), "2 non-manifold edges and 1 non-manifold vertex");
+    EXPECT_FALSE(SurfaceFaults{}.any());
+}
