@@ -1,6 +1,7 @@
 // `fcvt convert IN OUT`: a mesh file in another format (PLY, OBJ, OFF, STL, by extension), after
 // the input checks `fcvt remesh` makes; e.g. an OBJ that MeshLab 2020.09's importer aborts on,
-// turned into a PLY it opens.
+// turned into a PLY it opens. A non-manifold or non-orientable surface is written as read with a
+// warning (a converter converts what it can read, as MeshLab does); --strict refuses it.
 #include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
@@ -9,6 +10,7 @@
 #include "errors.h"
 #include "mesh_check.h"
 #include "mesh_io.h"
+#include "repair.h"
 
 #include <cstdio>
 #include <string>
@@ -21,28 +23,51 @@ namespace {
 void printUsage()
 {
     std::printf(
-        "Usage: fcvt convert IN OUT [--quiet]\n"
+        "Usage: fcvt convert IN OUT [--quiet] [--strict]\n"
         "\n"
         "Writes the triangle mesh IN to OUT, each in the format of its extension (.ply written\n"
         "binary, .obj, .off, .stl). IN is read and checked as 'fcvt remesh' reads and checks it: an\n"
-        "empty file, a point cloud, a bad index, a non-finite coordinate, a non-manifold edge or a\n"
-        "non-orientable surface is an error; polygons are triangulated. What remesh would repair\n"
-        "(duplicate or unreferenced vertices, degenerate or duplicate faces, orientation,\n"
-        "non-manifold vertices) is printed as a warning and written as it is: OUT holds IN's\n"
-        "vertices and faces, in IN's order. A PLY IN's normals (nx ny nz) and field (rosy_x rosy_y\n"
+        "empty file, a point cloud, a bad index or a non-finite coordinate is an error; polygons are\n"
+        "triangulated. What remesh would repair (duplicate or unreferenced vertices, degenerate or\n"
+        "duplicate faces, orientation, non-manifold vertices) is printed as a warning and written as\n"
+        "it is: OUT holds IN's vertices and faces, in IN's order. So is a surface with non-manifold\n"
+        "edges or a non-orientable part, with one warning line (remesh repairs both; --strict refuses\n"
+        "them, as remesh --no-repair does). A PLY IN's normals (nx ny nz) and field (rosy_x rosy_y\n"
         "rosy_z) go to a PLY OUT; IN's texture coordinates (OBJ vt, PLY texcoord) go to an OBJ or PLY\n"
         "OUT with the materials' image names (an OBJ's .mtl copied when OUT is in another folder).\n"
         "\n"
         "Options:\n"
-        "  --quiet       print nothing but errors\n"
+        "  --quiet       print nothing but errors and the warnings on OUT itself (the reader's, the\n"
+        "                texture's, a non-manifold or non-orientable surface)\n"
+        "  --strict      refuse a non-manifold edge or a non-orientable surface (exit 1)\n"
         "  -h, --help    show this help\n");
+}
+
+//! The one warning on a surface the strict check refuses (SurfaceTopologyError): what remesh's
+//! repair would split or cut, counted as it counts them without welding (the strict check's
+//! view: exact duplicates merged only); the check's own message if the repair finds nothing.
+std::string surfaceSummary(const std::string& inPath, const TriMesh& input, const std::string& refusal)
+{
+    RepairParams params;
+    params.weldTolerance = 0;
+    RepairReport repair;
+    repairMesh(input, params, repair);
+    const auto counted = [](int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
+    std::string found;
+    if (repair.nonManifoldEdges > 0) found = counted(repair.nonManifoldEdges, "non-manifold edge", "non-manifold edges");
+    if (repair.nonOrientableComponents > 0)
+        found += (found.empty() ? "" : " and ") +
+                 counted(repair.nonOrientableComponents, "non-orientable component", "non-orientable components");
+    if (found.empty()) found = refusal;
+    const bool one = repair.nonManifoldEdges + repair.nonOrientableComponents <= 1;
+    return inPath + ": " + found + ", written as read (remesh repairs " + (one ? "it" : "them") + "; --strict refuses)";
 }
 
 }  // namespace
 
 int runConvert(const std::vector<std::string>& args)
 {
-    const Arguments a(args, {}, {"quiet", "help"});
+    const Arguments a(args, {}, {"quiet", "help", "strict"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -58,8 +83,12 @@ int runConvert(const std::vector<std::string>& args)
     MeshTexture texture;
     const TriMesh input = readMesh(inPath, &readInfo, &attributes, &texture);
     InputReport check;
+    std::string surfaceWarning;
     try {
         prepareInput(input, check);
+    } catch (const SurfaceTopologyError& e) {
+        if (a.flag("strict")) throw InvalidInputError(inPath + ": " + e.what());
+        surfaceWarning = surfaceSummary(inPath, input, e.what());
     } catch (const InvalidInputError& e) {
         throw InvalidInputError(inPath + ": " + e.what());  // say which file the problem is in
     }
@@ -76,7 +105,9 @@ int runConvert(const std::vector<std::string>& args)
     }
     writeMesh(outPath, input, keepAttributes ? &attributes : nullptr, keepTexture ? &texture : nullptr);
 
-    // What makes the mesh differ from the file is said even with --quiet.
+    // What makes the mesh differ from the file is said even with --quiet, and so is a surface
+    // that is no manifold: what the check refused before, written now.
+    if (!surfaceWarning.empty()) std::fprintf(stderr, "fcvt: warning: %s\n", escapeControlCharacters(surfaceWarning).c_str());
     for (const std::string& warning : readInfo.warnings)
         std::fprintf(stderr, "fcvt: warning: %s: %s\n", inPath.c_str(), warning.c_str());
     for (const std::string& warning : textureWarnings) std::fprintf(stderr, "fcvt: warning: %s\n", warning.c_str());

@@ -1,8 +1,8 @@
 """fcvt convert IN OUT (issue 15 item 8): every supported format to every other keeps the
 triangles (PLY, OBJ, OFF: also the vertex and face order; STL stores a triangle soup), bad input
 gets the same single error line and exit code as fcvt remesh, what remesh would repair is a
-warning and is written as read, and the shipped resources/bunny.ply and torus.ply are what
-convert makes of the OBJ files.
+warning and is written as read (a non-manifold edge too, issue 50; --strict refuses it), and the
+shipped resources/bunny.ply and torus.ply are what convert makes of the OBJ files.
 Usage: check_convert.py FCVT RESOURCES_DIR WORK_DIR"""
 import filecmp
 import math
@@ -118,7 +118,7 @@ for args, code, fragment in [
     (["convert", cloud, out], 1, cloud),
     (["convert", nan_mesh, out], 1, nan_mesh),
     (["convert", bad_index, out], 1, bad_index),
-    (["convert", fin, out], 1, fin),
+    (["convert", fin, out, "--strict"], 1, "non-manifold edge"),
     (["convert", torus_obj, os.path.join(work, "out.xyz")], 1, "out.xyz"),
     (["convert", torus_obj, os.path.join(work, "no", "such", "dir", "out.ply")], 1, "out.ply"),
 ]:
@@ -126,6 +126,14 @@ for args, code, fragment in [
     check(not os.path.exists(out), f"'{' '.join(args)}': wrote {out}")
     if os.path.exists(out):
         os.remove(out)
+
+# A non-manifold edge is written as read, with one warning (issue 50, item 5).
+fin_off = os.path.join(work, "fin.off")
+code, stdout, stderr = convert(fin, fin_off)
+v, f = read_off(fin_off)
+check(len(v) == 5 and len(f) == 3, f"fin.obj: {len(v)} vertices, {len(f)} faces (expected 5, 3)")
+check(stderr.strip().splitlines() == [f"fcvt: warning: {fin}: 1 non-manifold edge, written as read (remesh repairs it; "
+                                      "--strict refuses)"], f"fin.obj: stderr {stderr!r}")
 
 code, stdout, stderr = run([fcvt, "convert", "--help"])
 check(code == 0 and "Usage: fcvt convert IN OUT" in stdout, "convert --help")

@@ -35,9 +35,9 @@ def main():
                              timeout=300)
         if not check(run.returncode == 0, f"{label}: fcvt exit {run.returncode}: {run.stderr.strip()[-300:]}"):
             continue
-        # Instant Meshes reads OBJ; `fcvt convert` refuses what remesh --no-repair would (conrod.stl).
+        # Instant Meshes reads OBJ; `fcvt convert --strict` refuses what remesh --no-repair would (conrod.stl).
         obj = os.path.join(work, f"{name}.obj")
-        if subprocess.run([fcvt, "convert", path, obj, "--quiet"], stderr=subprocess.DEVNULL).returncode != 0:
+        if subprocess.run([fcvt, "convert", path, obj, "--quiet", "--strict"], stderr=subprocess.DEVNULL).returncode != 0:
             stl_to_obj(path, obj)
         im_out = os.path.join(work, f"{name}.{n}.im.obj")
         im_run = subprocess.run([im, obj, "-o", im_out, "-r", "6", "-p", "6", "-v", n, "-d", "-t", "2"],
