@@ -47,6 +47,15 @@ add_test(NAME robustness_reliability3
   COMMAND Python3::Interpreter "${_fcvt_rob_dir}/check_reliability3.py" $<TARGET_FILE:fcvt> "${_fcvt_rob_work}/reliability3")
 set_tests_properties(robustness_reliability3 PROPERTIES LABELS robustness TIMEOUT 300)
 
+# Issue 50, items 4 and 5: --region on a selection with a non-manifold edge (inside, on its border,
+# a fin left out) or the wrong orientation comes out manifold and oriented, or is refused in one
+# line; convert writes a non-manifold or non-orientable mesh as read with one warning, --strict
+# refuses it.
+add_test(NAME robustness_region_convert_topology
+  COMMAND Python3::Interpreter "${_fcvt_rob_dir}/check_region_convert_topology.py" $<TARGET_FILE:fcvt>
+          "${_fcvt_rob_work}/region_convert_topology")
+set_tests_properties(robustness_region_convert_topology PROPERTIES LABELS robustness TIMEOUT 300)
+
 # Issue 32, item 1: well-shaped triangles, borders included, on the real-world meshes of
 # resources/realworld (their sources and licences in its README.md).
 set(_fcvt_realworld "${PROJECT_SOURCE_DIR}/resources/realworld")
