@@ -22,7 +22,10 @@ void addPolygon(TriMesh& mesh, const std::vector<int>& polygon, MeshReadInfo& in
 //! have coordinates `polygonUv`; empty: none, NaN is stored and the texture dropped later), and their material.
 void appendCornerTexture(const TriMesh& mesh, std::size_t firstFace, const std::vector<int>& polygon,
                          const std::vector<Vec2>& polygonUv, int material, MeshTexture& texture);
-//! Writes `bytes` to `path` (replacing it); throws IOError on any failure.
+//! Whether a write of `path` goes to a temporary file renamed over it (a regular file, a link or
+//! nothing there) rather than into it (a device or a FIFO, e.g. /dev/null).
+bool replacedOnWrite(const std::string& path);
+//! Writes `bytes` to `path` (replacing it, see replacedOnWrite); throws IOError on any failure.
 void writeFileBytes(const std::string& path, const std::string& bytes);
 
 // Readers, one per format. `path` is only used in messages (and by vcglib to open the file).

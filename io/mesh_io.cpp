@@ -4,6 +4,7 @@
 #include "errors.h"
 #include "io_detail.h"
 #include "mesh_format.h"
+#include "side_files.h"
 #include "triangulate.h"
 
 #include <algorithm>
@@ -68,8 +69,21 @@ void appendCornerTexture(const TriMesh& mesh, std::size_t firstFace, const std::
     }
 }
 
+bool replacedOnWrite(const std::string& path)
+{
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::symlink_status(path, ec);
+    return !std::filesystem::exists(status) || std::filesystem::is_regular_file(status) || std::filesystem::is_symlink(status);
+}
+
 void writeFileBytes(const std::string& path, const std::string& bytes)
 {
+    // A new file renamed into place: a link at `path` is replaced, never written through, and a
+    // reader never sees half a mesh. Devices (/dev/null) and FIFOs are written as they are.
+    if (replacedOnWrite(path)) {
+        writeFileReplacing(path, bytes);
+        return;
+    }
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out) fail(path, std::string("cannot write: ") + std::strerror(errno));
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -200,8 +214,18 @@ void writeMesh(const std::string& path, const TriMesh& mesh, const VertexAttribu
     switch (format) {
     case Format::Ply: io_detail::writePly(path, mesh, attrs, tex); break;
     case Format::Obj: io_detail::writeObj(path, mesh, attrs, tex); break;
-    case Format::Off: io_detail::writeOff(path, mesh); break;
-    case Format::Stl: io_detail::writeStl(path, mesh); break;
+    case Format::Off:
+    case Format::Stl: {
+        // vcglib's exporters take a file name: they write a temporary one, renamed into place.
+        const auto write = [&](const std::string& file) {
+            format == Format::Off ? io_detail::writeOff(file, mesh) : io_detail::writeStl(file, mesh);
+        };
+        if (io_detail::replacedOnWrite(path))
+            writeFileReplacing(path, write);
+        else
+            write(path);
+        break;
+    }
     }
 }
 
