@@ -23,7 +23,7 @@ namespace {
 void printUsage()
 {
     std::printf(
-        "Usage: fcvt convert IN OUT [--quiet] [--strict]\n"
+        "Usage: fcvt convert IN OUT [--quiet] [--strict] [--overwrite]\n"
         "\n"
         "Writes the triangle mesh IN to OUT, each in the format of its extension (.ply written\n"
         "binary, .obj, .off, .stl). IN is read and checked as 'fcvt remesh' reads and checks it: an\n"
@@ -34,12 +34,14 @@ void printUsage()
         "edges or a non-orientable part, with one warning line (remesh repairs both; --strict refuses\n"
         "them, as remesh --no-repair does). A PLY IN's normals (nx ny nz) and field (rosy_x rosy_y\n"
         "rosy_z) go to a PLY OUT; IN's texture coordinates (OBJ vt, PLY texcoord) go to an OBJ or PLY\n"
-        "OUT with the materials' image names (an OBJ's .mtl copied when OUT is in another folder).\n"
+        "OUT with the materials' image names (an OBJ OUT gets its own OUT.mtl, with IN's materials).\n"
         "\n"
         "Options:\n"
         "  --quiet       print nothing but errors and the warnings on OUT itself (the reader's, the\n"
         "                texture's, a non-manifold or non-orientable surface)\n"
         "  --strict      refuse a non-manifold edge or a non-orientable surface (exit 1)\n"
+        "  --overwrite   let OUT.mtl replace an existing file of that name (by default the new one\n"
+        "                is numbered, OUT_2.mtl, with a warning); IN's own files are never written\n"
         "  -h, --help    show this help\n");
 }
 
@@ -67,7 +69,7 @@ std::string surfaceSummary(const std::string& inPath, const TriMesh& input, cons
 
 int runConvert(const std::vector<std::string>& args)
 {
-    const Arguments a(args, {}, {"quiet", "help", "strict"});
+    const Arguments a(args, {}, {"quiet", "help", "strict", "overwrite"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -100,8 +102,11 @@ int runConvert(const std::vector<std::string>& args)
         !texture.empty() && (isPlyPath(outPath) || isObjPath(outPath)) && textureProblem(input, texture).empty();
     std::vector<std::string> textureWarnings;
     if (keepTexture) {
-        lookUpMaterialImages(texture, inPath, textureWarnings);
-        placeTextureFiles(texture, inPath, outPath);
+        SideFileNames names(a.flag("overwrite"));
+        names.reserve(outPath);
+        const std::vector<MaterialLibrary> libraries = lookUpMaterialImages(texture, inPath, textureWarnings);
+        protectInputFiles(texture, libraries, inPath, names);
+        placeTextureFiles(texture, libraries, inPath, outPath, names, textureWarnings);
     }
     writeMesh(outPath, input, keepAttributes ? &attributes : nullptr, keepTexture ? &texture : nullptr);
 

@@ -104,12 +104,17 @@ void printUsage()
         "                        optimisation, repair, warnings\n"
         "  --texture MODE        the output's texture, when IN has texture coordinates (OBJ vt, PLY\n"
         "                        texcoord) and OUT is .obj or .ply: keep (IN's atlas and images, each\n"
-        "                        face in one chart; the .mtl is copied if OUT is elsewhere), bake (a new\n"
-        "                        image OUT_texture.png, one triangle per face, sampled from IN's images),\n"
+        "                        face in one chart; an OBJ OUT gets its own OUT.mtl, IN's never edited),\n"
+        "                        bake (a new image OUT_texture.png, one triangle per face, sampled from\n"
+        "                        IN's images),\n"
         "                        auto (default: bake when keeping would put over 10 %% of the faces\n"
         "                        across a seam of IN's atlas, i.e. its charts are small; keep when IN's\n"
         "                        images cannot be read)\n"
         "  --no-texture          drop the input's texture coordinates\n"
+        "  --overwrite           let the files written beside OUT (OUT.mtl, OUT_texture.png) replace\n"
+        "                        existing files of those names (by default such a file is kept and\n"
+        "                        the new one numbered, OUT_texture_2.png, with a warning); IN and the\n"
+        "                        files it names are never written over\n"
         "  --quiet               print nothing but errors (progress: a bar on a terminal, plain lines\n"
         "                        on stderr otherwise); without --report, d_RMS and d_H are then\n"
         "                        not computed (nothing would show them)\n"
@@ -337,11 +342,11 @@ std::vector<std::string> runNotes(const std::string& inPath, const MeshReadInfo&
 
 int runRemesh(const std::vector<std::string>& args)
 {
-    const Arguments a(
-        args,
-        {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations", "seed",
-         "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region", "texture"},
-        {"quiet", "help", "no-valence", "no-repair", "keep-holes", "exact-count", "full-surface", "random-start", "no-texture"});
+    const Arguments a(args,
+                      {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations",
+                       "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region", "texture"},
+                      {"quiet", "help", "no-valence", "no-repair", "keep-holes", "exact-count", "full-surface", "random-start",
+                       "no-texture", "overwrite"});
     if (a.flag("help")) {
         printUsage();
         return 0;
@@ -414,8 +419,11 @@ int runRemesh(const std::vector<std::string>& args)
     std::vector<std::string> textureWarnings;
     // After a selection-only run the kept faces keep their own coordinates (faceOrigin).
     const std::vector<int> faceOrigin = region && !regionRun.wholeMesh ? regionRun.faceOrigin : std::vector<int>{};
+    SideFileNames sideFiles(a.flag("overwrite"));
+    sideFiles.reserve(outPath);
+    if (const auto reportPath = a.text("report")) sideFiles.reserve(*reportPath);
     const WrittenTexture texture = writeOutputTexture(input, inputTexture, result.mesh, faceOrigin, result.threads, inPath,
-                                                      outPath, textureMethod, textureWarnings);
+                                                      outPath, textureMethod, sideFiles, textureWarnings);
     writeOutput(outPath, regionRun, regionProperty, inputAttributes,
                 texture.made.texture.empty() ? nullptr : &texture.made.texture);
     const double writeSeconds = secondsSince(writeStart);

@@ -57,7 +57,13 @@ TexturedMesh readTextured(const std::string& path)
     if (t.texture.empty()) throw Error(path + ": no texture coordinates");
     std::vector<std::string> warnings;
     lookUpMaterialImages(t.texture, path, warnings);
-    t.images = readMaterialImages(t.texture, path);
+    try {
+        t.images = readMaterialImages(t.texture, path);
+    } catch (const Error&) {
+        // The look-up's reason (a FIFO, a library that is not one) says more than "no image".
+        if (!warnings.empty()) throw Error(warnings.front());
+        throw;
+    }
     return t;
 }
 

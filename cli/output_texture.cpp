@@ -45,7 +45,8 @@ fs::path bakedImagePath(const std::string& outPath)
 
 WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
                                   const std::vector<int>& faceOrigin, int threads, const std::string& inPath,
-                                  const std::string& outPath, TextureMethod method, std::vector<std::string>& warnings)
+                                  const std::string& outPath, TextureMethod method, SideFileNames& names,
+                                  std::vector<std::string>& warnings)
 {
     WrittenTexture result;
     if (inputTexture.empty()) return result;
@@ -55,7 +56,9 @@ WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& input
     }
     const auto start = std::chrono::steady_clock::now();
     MeshTexture withImages = inputTexture;  // the materials' images looked up in the .mtl files
-    lookUpMaterialImages(withImages, inPath, warnings);
+    const std::vector<MaterialLibrary> libraries = lookUpMaterialImages(withImages, inPath, warnings);
+    protectInputFiles(inputTexture, libraries, inPath, names);
+    protectInputFiles(withImages, libraries, inPath, names);
     OutputTextureParams params;
     params.method = method;
     params.threads = threads;
@@ -75,7 +78,7 @@ WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& input
         warnings.push_back(imageProblem + ": no texture to bake, the atlas is kept");
     MeshTexture& texture = result.made.texture;
     if (result.made.baked) {
-        const fs::path imagePath = bakedImagePath(outPath);
+        const fs::path imagePath = names.choose(bakedImagePath(outPath).string(), warnings);
         writePng(imagePath.string(), result.made.bakedImage);
         result.made.bakedImage = {};  // written: its memory back
         result.bakedImage = imagePath.string();
@@ -84,10 +87,9 @@ WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& input
         for (int m = 0; m < result.made.bakedMaterial; ++m)
             texture.materials[m].image = rebaseImage(texture.materials[m].image, inPath, outPath);
         texture.materials[result.made.bakedMaterial].image = imagePath.filename().string();
-        texture.libraries.clear();
-        placeTextureFiles(texture, outPath, outPath);
+        placeTextureFiles(texture, {}, outPath, outPath, names, warnings);
     } else {
-        placeTextureFiles(texture, inPath, outPath);
+        placeTextureFiles(texture, libraries, inPath, outPath, names, warnings);
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

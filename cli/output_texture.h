@@ -3,6 +3,7 @@
 // baked, chosen per mesh (--texture), with the files around it (.mtl, images) placed next to OUT.
 #include "mesh.h"
 #include "mesh_texture.h"
+#include "side_files.h"
 #include "texture_output.h"
 
 #include <nlohmann/json.hpp>
@@ -24,10 +25,12 @@ struct WrittenTexture {
 
 //! The texture for `output`, remeshed from `input` (read from `inPath`, to be written to
 //! `outPath`; `faceOrigin` as RegionRemeshResult's after a selection-only run, else empty);
-//! warnings when it cannot be made as asked (no image to bake from: the atlas kept).
+//! warnings when it cannot be made as asked (no image to bake from: the atlas kept). The files
+//! written beside OUT (its .mtl, the baked image) get their names from `names`.
 WrittenTexture writeOutputTexture(const TriMesh& input, const MeshTexture& inputTexture, const TriMesh& output,
                                   const std::vector<int>& faceOrigin, int threads, const std::string& inPath,
-                                  const std::string& outPath, TextureMethod method, std::vector<std::string>& warnings);
+                                  const std::string& outPath, TextureMethod method, SideFileNames& names,
+                                  std::vector<std::string>& warnings);
 
 //! The information line on the texture (empty without one).
 std::string textureNote(const WrittenTexture& texture);

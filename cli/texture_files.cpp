@@ -1,11 +1,10 @@
-// .mtl files read, copied and written; image paths rebased from the input's folder to the output's.
+// .mtl files read and written; image paths rebased from the input's folder to the output's.
 #include "texture_files.h"
 
 #include "cli_common.h"
 #include "errors.h"
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace fieldcvt::cli {
@@ -40,7 +39,8 @@ std::string rebase(const std::string& file, const fs::path& from, const fs::path
 //! The .mtl statements that name a file (as their last word).
 bool namesFile(const std::string& keyword)
 {
-    return keyword.rfind("map_", 0) == 0 || keyword == "bump" || keyword == "disp" || keyword == "decal" || keyword == "refl";
+    return keyword.rfind("map_", 0) == 0 || keyword == "bump" || keyword == "disp" || keyword == "decal" || keyword == "refl" ||
+           keyword == "norm";
 }
 
 //! A material file line's keyword (newmtl, map_Kd, ...).
@@ -60,33 +60,52 @@ std::string lastWord(const std::string& line)
     return line.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
 }
 
-bool readText(const fs::path& path, std::string& text)
+//! Whether `file` is there but is no regular file (a FIFO, a device, a directory): never named
+//! by the output, whose readers (MeshLab) would hang on it or fail.
+bool isSpecialFile(const fs::path& file)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
-    return !in.bad();
+    const std::string problem = sideFileProblem(file.string(), sideFileLimits().imageBytes);
+    return problem.rfind("is a", 0) == 0 && problem.find("limit") == std::string::npos;
 }
 
-void writeText(const fs::path& path, const std::string& text)
+//! `text` (a library read from `from`) with the files it names as seen from `to`; a statement
+//! naming a special file is dropped.
+std::string rebasedLibrary(const std::string& text, const fs::path& from, const fs::path& to)
 {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) throw IOError(path.string() + ": cannot write the material library");
+    std::istringstream lines(text);
+    std::string line, copy;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        const std::string keyword = firstWord(line);
+        const std::string file = lastWord(line);
+        if (namesFile(keyword) && !file.empty()) {
+            if (isSpecialFile(from / file)) continue;
+            const std::size_t at = line.rfind(file);
+            line = line.substr(0, at) + rebase(file, from, to) + line.substr(at + file.size());
+        }
+        copy += line + "\n";
+    }
+    return copy;
 }
 
 }  // namespace
 
-void lookUpMaterialImages(MeshTexture& texture, const std::string& inPath, std::vector<std::string>& warnings)
+std::vector<MaterialLibrary> lookUpMaterialImages(MeshTexture& texture, const std::string& inPath,
+                                                  std::vector<std::string>& warnings)
 {
     const fs::path folder = folderOf(inPath);
+    std::vector<MaterialLibrary> read;
     for (const std::string& library : texture.libraries) {
+        const std::string path = (folder / library).string();
         std::string text;
-        if (!readText(folder / library, text)) {
-            warnings.push_back(inPath + ": material library " + library + " cannot be read: texture images unknown");
+        try {
+            text = readSideFile(path, sideFileLimits().materialLibraryBytes);
+        } catch (const IOError& e) {
+            warnings.push_back("material library " + std::string(e.what()) + ": cannot be read, texture images unknown");
+            continue;
+        }
+        if (const std::string problem = materialLibraryProblem(text); !problem.empty()) {
+            warnings.push_back("material library " + path + " " + problem + ": not used, texture images unknown");
             continue;
         }
         std::istringstream lines(text);
@@ -98,10 +117,37 @@ void lookUpMaterialImages(MeshTexture& texture, const std::string& inPath, std::
             for (TextureMaterial& m : texture.materials)
                 if (m.name == material && m.image.empty()) m.image = lastWord(line);
         }
+        read.push_back({library, text});
     }
-    for (const TextureMaterial& m : texture.materials)
-        if (!m.image.empty() && !fs::exists(folder / m.image))
+    for (TextureMaterial& m : texture.materials) {
+        if (m.image.empty()) continue;
+        const std::string path = (folder / m.image).string();
+        const std::string problem = sideFileProblem(path, sideFileLimits().imageBytes);
+        if (problem == "does not exist") {
             warnings.push_back(inPath + ": texture image " + m.image + " not found (the texture coordinates are kept)");
+        } else if (isSpecialFile(path)) {
+            warnings.push_back(inPath + ": texture image " + path + " " + problem +
+                               ": not read nor named by the output (the texture coordinates are kept)");
+            m.image.clear();
+        }
+    }
+    return read;
+}
+
+void protectInputFiles(const MeshTexture& texture, const std::vector<MaterialLibrary>& libraries, const std::string& inPath,
+                       SideFileNames& names)
+{
+    const fs::path folder = folderOf(inPath);
+    names.protect(inPath);
+    for (const std::string& library : texture.libraries) names.protect((folder / library).string());
+    for (const TextureMaterial& m : texture.materials)
+        if (!m.image.empty()) names.protect((folder / m.image).string());
+    for (const MaterialLibrary& library : libraries) {
+        std::istringstream lines(library.text);
+        std::string line;
+        while (std::getline(lines, line))
+            if (namesFile(firstWord(line)) && !lastWord(line).empty()) names.protect((folder / lastWord(line)).string());
+    }
 }
 
 std::string rebaseImage(const std::string& image, const std::string& inPath, const std::string& outPath)
@@ -109,46 +155,34 @@ std::string rebaseImage(const std::string& image, const std::string& inPath, con
     return rebase(image, folderOf(inPath), folderOf(outPath));
 }
 
-void placeTextureFiles(MeshTexture& texture, const std::string& inPath, const std::string& outPath)
+void placeTextureFiles(MeshTexture& texture, const std::vector<MaterialLibrary>& libraries, const std::string& inPath,
+                       const std::string& outPath, SideFileNames& names, std::vector<std::string>& warnings)
 {
     const fs::path from = folderOf(inPath), to = folderOf(outPath);
-    const bool objOutput = isObjPath(outPath);
-    if (objOutput && texture.libraries.empty()) {
-        bool images = false;
-        for (const TextureMaterial& m : texture.materials) images |= !m.image.empty();
-        if (!images) return;
-        // Images without a material library (PLY's TextureFile): one written for the output.
-        const fs::path mtl = fs::path(outPath).replace_extension(".mtl");
-        std::string text = "# written by fcvt\n";
-        for (std::size_t i = 0; i < texture.materials.size(); ++i) {
-            TextureMaterial& m = texture.materials[i];
-            m.name = "material_" + std::to_string(i);
-            text += "newmtl " + m.name + "\nKd 1 1 1\n" + (m.image.empty() ? "" : "map_Kd " + rebase(m.image, from, to) + "\n");
-        }
-        writeText(mtl, text);
-        texture.libraries = {mtl.filename().string()};
-        return;
-    }
-    if (objOutput && !sameFolder(from, to)) {
-        for (std::string& library : texture.libraries) {
-            std::string text;
-            const fs::path target = to / fs::path(library).filename();
-            if (!readText(from / library, text)) continue;  // already a warning; the name stays
-            std::istringstream lines(text);
-            std::string line, copy;
-            while (std::getline(lines, line)) {
-                const std::string keyword = firstWord(line);
-                const std::string file = lastWord(line);
-                if (namesFile(keyword) && !file.empty())
-                    line =
-                        line.substr(0, line.rfind(file)) + rebase(file, from, to) + line.substr(line.rfind(file) + file.size());
-                copy += line + "\n";
+    texture.libraries.clear();
+    std::string text;
+    if (isObjPath(outPath)) {
+        if (!libraries.empty()) {
+            for (const MaterialLibrary& library : libraries)
+                text += "# from " + library.name + "\n" + rebasedLibrary(library.text, from, to);
+        } else {
+            // Images without a material library (PLY's TextureFile, a baked image): one material each.
+            bool images = false;
+            for (const TextureMaterial& m : texture.materials) images |= !m.image.empty();
+            for (std::size_t i = 0; images && i < texture.materials.size(); ++i) {
+                TextureMaterial& m = texture.materials[i];
+                m.name = "material_" + std::to_string(i);
+                text +=
+                    "newmtl " + m.name + "\nKd 1 1 1\n" + (m.image.empty() ? "" : "map_Kd " + rebase(m.image, from, to) + "\n");
             }
-            writeText(target, copy);
-            library = target.filename().string();
         }
     }
     for (TextureMaterial& m : texture.materials) m.image = rebase(m.image, from, to);
+    if (text.empty()) return;
+    // The output's own library, never the input's: other meshes may share that one.
+    const std::string mtl = names.choose(fs::path(outPath).replace_extension(".mtl").string(), warnings);
+    writeFileReplacing(mtl, "# written by fcvt\n" + text);
+    texture.libraries = {fs::path(mtl).filename().string()};
 }
 
 }  // namespace fieldcvt::cli

@@ -156,3 +156,11 @@ add_test(NAME cli_texture_render
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_texture_render.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/textured
           ${FCVT_CLI_WORK}/texture_render)
 set_tests_properties(cli_texture_bunny_2000 cli_texture_render PROPERTIES LABELS "cli" TIMEOUT 600)
+
+# Issue 50: the files a mesh names (material libraries, images, TextureFile) that are FIFOs,
+# devices, directories, oversized or not material libraries; the files written beside OUT
+# (OUT.mtl, OUT_texture.png) against links, the input's own files and existing files; OUT a link.
+add_test(NAME cli_side_files
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_side_files.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/textured
+          ${FCVT_CLI_WORK}/side_files)
+set_tests_properties(cli_side_files PROPERTIES LABELS "cli" TIMEOUT 900)

@@ -19,7 +19,8 @@ import sys
 from fcvt_check import check, finish, read_obj, run
 
 fcvt, textured, work = sys.argv[1], sys.argv[2], sys.argv[3]
-os.makedirs(work, exist_ok=True)
+shutil.rmtree(work, ignore_errors=True)  # a rerun's OUT.mtl and images would be numbered
+os.makedirs(work)
 # (mesh, vertices, largest ratio allowed)
 CASES = [("bunny10k_textured.obj", 2000, 2.0), ("bunny10k_textured.obj", 5000, 2.0),
          ("sub.obj", 2000, 2.0), ("sub.obj", 5000, 2.0)]
@@ -60,9 +61,10 @@ for name, vertices, bar in CASES:
         k = compare(inp, kept)
         print(f"{stem} --texture keep: ratio {k['ratio']:.2f}")
         check(k["ratio"] > r["ratio"], f"{stem}: keeping the atlas ({k['ratio']:.2f}) should be worse than baking ({r['ratio']:.2f})")
-        # A PLY output names the baked image in its TextureFile comment.
+        # A PLY output names the baked image in its TextureFile comment. The OBJ run's image has
+        # the same name: --overwrite lets this run replace it (without, it would be numbered).
         ply = os.path.join(work, stem + ".ply")
-        remesh(inp, ply, vertices)
+        remesh(inp, ply, vertices, "--overwrite")
         header = open(ply, "rb").read().split(b"end_header")[0].decode()
         check(f"comment TextureFile {stem}_texture.png" in header and "texcoord" in header, f"{stem}.ply: TextureFile, texcoord")
 
