@@ -2,12 +2,18 @@
 
 #include "mesh_convert.h"
 
+#include "errors.h"
+#include "side_files.h"
 #include "texture_output.h"
 
+#include <QBuffer>
 #include <QFileInfo>
 #include <QImage>
+#include <QImageReader>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace fcvt_plugin {
 
@@ -54,21 +60,51 @@ QImage toQImage(const fieldcvt::TextureImage& t)
     return image;
 }
 
-//! The input layer's images, one per texture; empty when one cannot be had. MeshLab 2022.02 and
-//! later hold them in the layer (a texture it could not load is named "dummy.png" and shows a
-//! placeholder); 2020.09 holds only names, read here as MeshLab does: relative to the layer's file.
-std::vector<fieldcvt::TextureImage> layerImages(const MeshModel& input)
+//! The input layer's images, one per texture; empty, with the reason in `problem`, when one cannot
+//! be had. MeshLab 2022.02 and later hold them in the layer (a texture it could not load is named
+//! "dummy.png" and shows a placeholder); 2020.09 holds only names, read here as MeshLab does:
+//! relative to the layer's file, and as the CLI reads them: a regular file, bounded in bytes and
+//! pixels (io/side_files.h), so that a FIFO or a device named as a texture cannot hang MeshLab.
+std::vector<fieldcvt::TextureImage> layerImages(const MeshModel& input, QString& problem)
 {
     std::vector<fieldcvt::TextureImage> images;
     for (const std::string& name : input.cm.textures) {
 #if FCVT_MESHLAB_API == 2022
         const QImage image = input.getTexture(name);
-        if (name == "dummy.png") return {};
+        if (name == "dummy.png") {
+            problem = "the input's texture images could not be loaded by MeshLab";
+            return {};
+        }
 #else
         const QString file = QString::fromStdString(name);
-        const QImage image(QFileInfo(file).isAbsolute() ? file : input.pathName() + "/" + file);
+        const QString path = QFileInfo(file).isAbsolute() ? file : input.pathName() + "/" + file;
+        const fieldcvt::SideFileLimits& limits = fieldcvt::sideFileLimits();
+        QByteArray bytes;
+        try {
+            const std::string read = fieldcvt::readSideFile(path.toStdString(), limits.imageBytes);
+            bytes = QByteArray(read.data(), int(read.size()));
+        } catch (const fieldcvt::Error& e) {
+            problem = QString("texture image ") + e.what();
+            return {};
+        }
+        QBuffer buffer(&bytes);
+        QImageReader reader(&buffer);
+        const QSize size = reader.size();
+        if (size.width() > limits.imageSide || size.height() > limits.imageSide ||
+            quint64(std::max(size.width(), 0)) * quint64(std::max(size.height(), 0)) > limits.imagePixels) {
+            problem = QString("texture image %1 is %2 x %3 pixels, over the limit of %4 Mpixel")
+                          .arg(path)
+                          .arg(size.width())
+                          .arg(size.height())
+                          .arg(limits.imagePixels / 1000000);
+            return {};
+        }
+        const QImage image = reader.read();
 #endif
-        if (image.isNull()) return {};
+        if (image.isNull()) {
+            problem = "the input's texture image " + QString::fromStdString(name) + " cannot be read";
+            return {};
+        }
         images.push_back(toTextureImage(image));
     }
     return images;
@@ -91,9 +127,22 @@ QString storeBakedImage(const MeshModel& input, bool inputKept, const QImage& im
     if (input.fullName().isEmpty()) return "the input layer has no file to write the image beside";
     const QString stem = QFileInfo(QString::fromStdString(name)).completeBaseName();
     QString file = QString::fromStdString(name);
-    for (int i = 2; QFileInfo::exists(input.pathName() + "/" + file); ++i) file = QString("%1_%2.png").arg(stem).arg(i);
+    // Any entry there counts, a dangling link too: the image is written through no link and over
+    // no file, the input's images included.
+    const auto taken = [&](const QString& f) {
+        std::error_code ec;
+        return std::filesystem::exists(std::filesystem::symlink_status((input.pathName() + "/" + f).toStdString(), ec));
+    };
+    for (int i = 2; taken(file); ++i) file = QString("%1_%2.png").arg(stem).arg(i);
     const QString path = input.pathName() + "/" + file;
-    if (!image.save(path, "PNG")) return "cannot write " + path;
+    QByteArray png;
+    QBuffer buffer(&png);
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) return "cannot encode the baked image as PNG";
+    try {
+        fieldcvt::writeFileReplacing(path.toStdString(), std::string(png.constData(), size_t(png.size())));
+    } catch (const fieldcvt::Error& e) {
+        return QString("cannot write the baked image: ") + e.what();
+    }
     name = file.toStdString();
     output.cm.textures = inputKept ? input.cm.textures : std::vector<std::string>{};
     output.cm.textures.push_back(name);
@@ -130,16 +179,17 @@ QString transferLayerTexture(const MeshModel& input, const fieldcvt::TriMesh& ou
     if (size_t(output.cm.fn) != outputMesh.faces.size()) return "FCVT: texture coordinates not carried (face count changed)";
     fieldcvt::OutputTextureParams params;
     params.threads = threads;
-    fieldcvt::OutputTexture made =
-        fieldcvt::makeOutputTexture(layerMesh, texture, layerImages(input), outputMesh, faceOrigin, params);
+    QString imageProblem;
+    const std::vector<fieldcvt::TextureImage> images = layerImages(input, imageProblem);
+    fieldcvt::OutputTexture made = fieldcvt::makeOutputTexture(layerMesh, texture, images, outputMesh, faceOrigin, params);
     const QString seams = QString("%1 charts, %2 new faces (%3 %) across a seam")
                               .arg(made.charts)
                               .arg(made.continuedFaces)
                               .arg(100.0 * made.continuedShare, 0, 'f', 2);
-    QString bakeProblem = made.tooManyFacesToBake
-                              ? QString("too many faces for a texture of %1 x %1 texels").arg(params.bakeMaxSize)
-                          : made.bakeImpossible ? "the input's texture images cannot be read"
-                                                : QString();
+    QString bakeProblem =
+        made.tooManyFacesToBake ? QString("too many faces for a texture of %1 x %1 texels").arg(params.bakeMaxSize)
+        : made.bakeImpossible   ? (imageProblem.isEmpty() ? "the input's texture images cannot be read" : imageProblem)
+                                : QString();
     if (made.baked) {
         std::string name = output.label().toStdString() + "_texture.png";
         bakeProblem = storeBakedImage(input, made.bakedMaterial > 0, toQImage(made.bakedImage), name, output);
