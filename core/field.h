@@ -2,6 +2,7 @@
 // The 6-RoSy direction field that FCVT aligns edges to (paper §3.2–3.3, §4.1): per input vertex
 // a unit normal n and a unit representative direction d ⟂ n; the six field directions are d
 // rotated by k·60° about n.
+#include "field_types.h"
 #include "mesh.h"
 
 #include <cstdint>
@@ -9,18 +10,6 @@
 #include <vector>
 
 namespace fieldcvt {
-
-struct DirectionField {
-    std::vector<Vec3> normals;     //!< per input vertex, unit
-    std::vector<Vec3> directions;  //!< per input vertex, unit, orthogonal to the normal
-};
-
-enum class FieldSource {
-    Extrinsic,     //!< extrinsically smooth field of Instant Meshes (Jakob et al. 2015)
-    CurvatureMax,  //!< maximal principal-curvature direction
-    CurvatureMin,  //!< minimal principal-curvature direction
-    User,          //!< given per vertex by the caller (RemeshParams::userDirections)
-};
 
 //! "extrinsic", "curvature-max", "curvature-min", "user" <-> FieldSource (throws
 //! InvalidInputError on an unknown name).
@@ -62,22 +51,6 @@ struct FieldParams {
 //! mesh_check.h). Deterministic for a given seed and independent of the thread count.
 DirectionField computeField(const TriMesh& mesh, const FieldParams& params);
 
-//! What one computeField run did (for tests, benchmarks and reports).
-struct FieldReport {
-    std::vector<int> levelVertexCounts;  //!< vertices per hierarchy level, finest (the input) first
-    //! Energy minimised (extrinsicEnergy, or its intrinsic counterpart: FieldSmoothness) of the
-    //! field on the input mesh: [0] the random initial field, then after smoothing each level,
-    //! coarsest first, prolongated to the input mesh.
-    std::vector<double> levelEnergies;
-    //! Per level, coarsest first: that level's weighted energy before smoothing, then after each
-    //! Gauss–Seidel sweep (non-increasing).
-    std::vector<std::vector<double>> sweepEnergies;
-    int constrainedVertices = 0;  //!< input vertices whose direction was prescribed
-    //! Curvature sources: vertices where curvature was (nearly) umbilic or flat and the direction
-    //! comes from smoothing with the reliable ones fixed.
-    int umbilicVertices = 0;
-};
-
 struct FieldHierarchyLevels;
 
 //! As above, and fills `report` (the energy traces cost extra time; pass nullptr to skip).
@@ -99,12 +72,6 @@ std::vector<Vec3> vertexNormals(const TriMesh& mesh);
 //! The extrinsic energy Σ_edges ||d_i' − d_j'||² over the best-matching representatives
 //! (Jakob et al. 2015, eq. 3); smoothing lowers it.
 double extrinsicEnergy(const TriMesh& mesh, const DirectionField& field);
-
-struct Singularity {
-    int face = -1;  //!< face whose corners' representatives turn by a non-zero amount
-    int index = 0;  //!< 6-RoSy index in sixths of a turn (sum over faces = 6·χ on a closed surface)
-    Vec3 position;  //!< the face's centroid
-};
 
 //! Per-face 6-RoSy index: the sum of the rotations (in multiples of 60°) of the matched
 //! representatives around the face; faces with a non-zero index are singular.

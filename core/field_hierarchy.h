@@ -4,7 +4,7 @@
 // vertex graphs built by greedy pairwise clustering, and coarse-to-fine Gauss–Seidel smoothing
 // with the extrinsic compatibility of their eq. 3. Internal to field.cpp and curvature users;
 // the public API is field.h.
-#include "field.h"
+#include "field_types.h"
 #include "mesh.h"
 
 #include <cstdint>
