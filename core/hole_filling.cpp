@@ -1,7 +1,7 @@
 #include "hole_filling.h"
 
+#include "boundary.h"
 #include "disjoint_sets.h"
-#include "region.h"
 #include "triangulate.h"
 
 #include <algorithm>

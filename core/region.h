@@ -11,6 +11,7 @@
 // is repaired on its own (repairRegion), and each piece is oriented as the kept faces around it
 // (orientRegionToKept). What remeshRegion returns is manifold and oriented except where the
 // faces kept outside the selection were not (a warning says so); otherwise it throws.
+#include "boundary.h"  // borderLoops, which the region's seam works along
 #include "mesh.h"
 #include "metrics.h"
 #include "remesh.h"
@@ -113,10 +114,6 @@ std::vector<RegionSubmesh> regionParts(const RegionSubmesh& region);
 //! `against` receives the border edges outvoted (kept faces on both sides of the vote: the input
 //! is not consistently oriented there, or not orientable through the region).
 int orientRegionToKept(RegionSubmesh& region, const KeptEdges& kept, int* against = nullptr);
-
-//! The directed border loops of a region (edges a -> b of one region face each, the region on
-//! their left), as region vertex indices; a vertex the loops pass twice appears twice.
-std::vector<std::vector<int>> borderLoops(const TriMesh& region);
 
 //! A remeshed region ready to be stitched: its vertices are either border vertices of the whole
 //! mesh (original[v] >= 0, at exactly that vertex's coordinates) or new ones (original[v] = -1).

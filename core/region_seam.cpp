@@ -1,5 +1,6 @@
 // The seam of a remeshed region (region.h): its border put exactly on the region's own border
 // vertices, so that the new faces meet the kept ones edge to edge.
+#include "boundary.h"
 #include "mesh_edges.h"
 #include "region.h"
 #include "triangle_shape.h"
@@ -8,7 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <unordered_map>
 
 namespace fieldcvt {
@@ -24,24 +24,6 @@ std::unordered_map<std::uint64_t, int> directedEdges(const std::vector<Face>& fa
     for (const Face& f : faces)
         for (int k = 0; k < 3; ++k) ++edges[edgeKey(f[k], f[(k + 1) % 3])];
     return edges;
-}
-
-//! The border half-edges a -> b of `faces`, in half-edge order: no face has b -> a and one face
-//! has a -> b. Through the edge table (a counting sort), not a hash map of directed edges: this
-//! runs on whole inputs (hole closing), millions of faces.
-std::vector<std::pair<int, int>> borderHalfEdges(const std::vector<Face>& faces)
-{
-    int vertexCount = 0;
-    for (const Face& f : faces) vertexCount = std::max({vertexCount, f[0] + 1, f[1] + 1, f[2] + 1});
-    const EdgeTable edges = buildEdgeTable(faces, vertexCount);
-    std::vector<std::pair<int, int>> out;
-    for (int h = 0; h < 3 * static_cast<int>(faces.size()); ++h) {
-        const int a = halfEdgeOrigin(faces, h), b = faces[size_t(h / 3)][size_t((h % 3 + 1) % 3)];
-        const int e = edges.halfEdgeEdge[size_t(h)];
-        if (a == b || edges.faceCount(e) != 1) continue;  // one half-edge on the edge: h itself
-        out.push_back({a, b});
-    }
-    return out;
 }
 
 //! In degrees: the flips compare it with the caller's bounds (triangle_shape.h's, converted).
@@ -257,29 +239,6 @@ bool removeBorderVertex(PatchEdit& edit, int s)
 }
 
 }  // namespace
-
-std::vector<std::vector<int>> borderLoops(const TriMesh& region)
-{
-    std::map<int, std::vector<int>> outgoing;  // ordered: the loops in a fixed order
-    for (const auto& [a, b] : borderHalfEdges(region.faces)) outgoing[a].push_back(b);
-    std::vector<std::vector<int>> loops;
-    for (auto& [first, ends] : outgoing)
-        while (!ends.empty()) {
-            std::vector<int> loop{first};
-            int at = first;
-            while (true) {
-                auto& next = outgoing[at];
-                if (next.empty()) break;
-                const int b = next.front();
-                next.erase(next.begin());
-                if (b == first) break;
-                loop.push_back(b);
-                at = b;
-            }
-            loops.push_back(std::move(loop));
-        }
-    return loops;
-}
 
 bool pinBorder(const RegionSubmesh& region, TriMesh& patch, std::vector<int>& original, std::string& failure)
 {

@@ -1,8 +1,8 @@
 #include "thin_parts.h"
 
+#include "boundary.h"
 #include "mesh_edges.h"
 #include "point_tree.h"
-#include "region.h"
 
 #include <algorithm>
 #include <cmath>
