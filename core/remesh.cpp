@@ -123,27 +123,62 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     const int threadCount = threadsForThisMachine(params.threads);
     const ThreadCountScope threads(threadCount);
     const HugePageHeap heap;  // and adviseNewHugePages() before each stage (Pipeline::run)
+    Pipeline pipeline(progress, params);
     RemeshResult result;
     result.threads = threadCount;
-    RemeshRun run(input, params, progress, result);
-    prepareSurface(run);
-    findFeatureLines(run);
-    chooseOptimisationSurface(run);
-    chooseDensity(run);
-    setUpEnergy(run);
-    computeFieldStage(run);
-    placeSamples(run);
-    optimiseSamples(run);
-    extractMesh(run);
-    remeshThinPartsAgain(run);
-    run.energy->releaseDiagram();  // the mesh is extracted: the diagram's memory is free for the next stages
-    optimiseValence(run);
-    projectOnInput(run);
-    attachOutputField(run);
-    measure(run);
-    returnToInputFrame(run);
-    run.pipeline.report("done", 100);
-    result.totalSeconds = secondsSince(run.start);
+    const int sampleCount = params.initialSamples.empty() ? params.vertexCount : static_cast<int>(params.initialSamples.size());
+
+    PreparedSurface prepared = prepareSurface(input, params, sampleCount, pipeline);
+    result.warnings = prepared.warnings;
+    result.inputWarnings = static_cast<int>(result.warnings.size());
+    result.notes = prepared.notes;
+    result.repair = std::move(prepared.repair);
+    FeatureLines features = findFeatureLines(prepared, params, result.warnings);
+    OptimisationSurface surface = chooseOptimisationSurface(prepared, std::move(features), params, sampleCount, pipeline);
+    result.inputTopology = surface.inputTopology;
+    result.optimisationFaces = surface.mesh().faceCount();
+    const PassInput firstPass{chooseDensity(surface, params), sampleCount, false};
+    const OptimisationPlan plan = planOptimisation(surface, firstPass.rho, sampleCount, params);
+    FieldStage field = computeFieldStage(input, surface, prepared.frame, plan, params, pipeline);
+    result.singularities = field.singularities;
+
+    std::unique_ptr<const ClosestPointTree> tree;  // the optimisation surface's, built by the first pass
+    const PassContext context{input, surface, prepared.frame, field, params, pipeline, tree, field.hierarchy};
+    ThinPartsOutcome kept = remeshThinPartsAgain(optimiseAndExtract(context, firstPass), firstPass, context);
+    PassResult& pass = kept.pass;
+    pass.energy->releaseDiagram();  // the mesh is extracted: the diagram's memory is free for the next stages
+    if (!kept.warning.empty()) result.warnings.push_back(kept.warning);
+    result.warnings.insert(result.warnings.end(), pass.warnings.begin(), pass.warnings.end());
+    result.thinParts = kept.report;
+    result.fcvtIterations = pass.fcvtIterations;
+    if (pass.lattice) result.lattice = *pass.lattice;
+
+    ValencedMesh valenced = optimiseValence(std::move(pass.extracted), context);
+    result.valence = valenced.stats;
+    TriMesh mesh = std::move(valenced.mesh);
+    if (surface.simplified) {
+        if (!surface.inputTree) surface.inputTree = std::make_unique<ClosestPointTree>(prepared.surface);
+        mesh.vertices = projectOnInput(std::move(mesh.vertices), *surface.inputTree, pipeline);
+    }
+    if (plan.useField) {
+        // The field at the output's vertices (written with a PLY output).
+        FieldFrames frames = pass.energy->framesAt(mesh.vertices);
+        result.outputNormals = std::move(frames.normals);
+        result.outputDirections = std::move(frames.directions);
+    }
+    Measurement measured = measure(mesh, surface, *tree, params, pipeline);
+    result.outputTopology = measured.outputTopology;
+    result.warnings.insert(result.warnings.end(), measured.warnings.begin(), measured.warnings.end());
+    OutputInInputFrame output = returnToInputFrame(std::move(mesh), prepared.frame, params, measured.metrics);
+    result.mesh = std::move(output.mesh);
+    result.metrics = output.metrics;
+    result.warnings.insert(result.warnings.end(), output.warnings.begin(), output.warnings.end());
+
+    pipeline.report("done", 100);
+    result.evaluations = pipeline.evaluations;
+    result.energyHistory = std::move(pipeline.energyHistory);
+    result.stageTimes = std::move(pipeline.stageTimes);
+    result.totalSeconds = secondsSince(pipeline.start);
     return result;
 }
 

@@ -4,6 +4,7 @@
 #include "metrics.h"
 #include "remesh_stages.h"
 #include "thin_parts.h"
+#include "valence.h"
 
 #include <algorithm>
 #include <cmath>
@@ -101,14 +102,10 @@ int topologyDistance(const TopologySummary& output, const TopologySummary& input
            std::abs(output.components - input.components) + (output.manifold() ? 0 : 1);
 }
 
-//! One pass's output and what the later stages need of it, to keep the best pass.
+//! One pass's output with its input and what the passes measure of it, to keep the best pass.
 struct PassOutcome {
-    TriMesh mesh;
-    std::vector<VertexRole> roles;
-    std::vector<int> vertexFaceHints;
-    std::vector<std::string> warnings;
-    int sampleCount = 0;
-    std::vector<double> rho;
+    PassResult result;
+    PassInput input;
     TopologySummary topology;
     LostSurface lost;          //!< the surface it lost
     int topologyDistance = 0;  //!< from the input's topology
@@ -116,46 +113,46 @@ struct PassOutcome {
     bool shapeMeasured = false;
     double smallestAngle = 0;  //!< degrees, after the valence stage (when shapeMeasured)
     double shareUnder30 = 0;   //!< % of the triangles with an angle under 30 degrees, after it
-    bool sideAware = false;    //!< made with side-aware cells (RemeshRun::sideAwareCells)
     int thinFaces = 0;         //!< faces whose density the passes raised
     double thinnest = 0;       //!< the thinnest part they measured (working units)
+    const TriMesh& mesh() const { return result.extracted.mesh; }
+    bool made() const { return input.sampleCount > 0; }
 };
 
 //! The triangles' shape (Table 2) of a pass's mesh once the valence stage has run on it (on a
 //! copy: the stage runs on the kept pass later, with the same result), which repairs many of the
 //! RDT's slivers; the RDT's own when that stage is off.
-QualityMetrics shapeAfterValence(const RemeshRun& run, TriMesh mesh, std::vector<VertexRole> roles,
-                                 const std::vector<int>& faceHints)
+QualityMetrics shapeAfterValence(const PassContext& context, const ExtractedMesh& extracted)
 {
-    if (!run.params.valenceOptimization) return computeQuality(mesh);
-    const ValenceSurface on{run.optSurface(), *run.tree, run.features.segments, run.useField ? &run.field : nullptr, run.border};
-    optimizeValence(mesh, roles, on, run.params.valence, faceHints);
+    if (!context.params.valenceOptimization) return computeQuality(extracted.mesh);
+    TriMesh mesh = extracted.mesh;
+    std::vector<VertexRole> roles = extracted.roles;
+    const OptimisationSurface& surface = context.surface;
+    const bool useField = context.params.fcvtIterations > 0 && context.params.lambda > 0;
+    const ValenceSurface on{surface.mesh(), *context.tree, surface.features.segments, useField ? &context.field.field : nullptr,
+                            surface.border};
+    optimizeValence(mesh, roles, on, context.params.valence, extracted.vertexFaceHints);
     return computeQuality(mesh);
 }
 
-PassOutcome takeOutcome(RemeshRun& run)
+PassOutcome takeOutcome(const PassContext& context, PassResult&& result, const PassInput& input)
 {
     PassOutcome out;
-    out.topology = computeTopology(run.result.mesh);
-    out.lost = lostSurface(run.result.mesh, run.optSurface());
-    out.topologyDistance = topologyDistance(out.topology, run.result.inputTopology);
+    out.topology = computeTopology(result.extracted.mesh);
+    out.lost = lostSurface(result.extracted.mesh, context.surface.mesh());
+    out.topologyDistance = topologyDistance(out.topology, context.surface.inputTopology);
     out.distance = out.topologyDistance + out.lost.cells;
-    out.mesh = std::move(run.result.mesh);
-    out.roles = std::move(run.roles);
-    out.vertexFaceHints = std::move(run.vertexFaceHints);
-    out.warnings = run.result.warnings;
-    out.sampleCount = run.sampleCount;
-    out.rho = run.rho;
-    out.sideAware = run.sideAwareCells;
+    out.result = std::move(result);
+    out.input = input;
     return out;
 }
 
 //! Measures the pass's shape once (it costs a valence stage): only passes nearer the input's
 //! topology, and the first one to compare them with, need it.
-void measureShape(const RemeshRun& run, PassOutcome& pass)
+void measureShape(const PassContext& context, PassOutcome& pass)
 {
     if (pass.shapeMeasured) return;
-    const QualityMetrics shape = shapeAfterValence(run, pass.mesh, pass.roles, pass.vertexFaceHints);
+    const QualityMetrics shape = shapeAfterValence(context, pass.result.extracted);
     pass.smallestAngle = shape.thetaMin;
     pass.shareUnder30 = shape.pctLt30;
     pass.shapeMeasured = true;
@@ -169,29 +166,18 @@ bool thinPartsMayMend(const TopologySummary& output, const TopologySummary& inpu
     return output.boundaryLoops > input.boundaryLoops || output.components > input.components || output.genus < input.genus;
 }
 
-void restoreOutcome(RemeshRun& run, PassOutcome&& pass)
-{
-    run.result.mesh = std::move(pass.mesh);
-    run.roles = std::move(pass.roles);
-    run.vertexFaceHints = std::move(pass.vertexFaceHints);
-    run.result.warnings = std::move(pass.warnings);
-    run.sampleCount = pass.sampleCount;
-    run.rho = std::move(pass.rho);
-    run.sideAwareCells = pass.sideAware;
-}
-
-//! Raises run.rho to at least μ² on the thin parts near `focus` (everywhere when it has no
-//! points) and run.sampleCount by the vertices that adds (∫ √ρ dA at one vertex per unit of
+//! Raises `pass.rho` to at least μ² on the thin parts near `focus` (everywhere when it has no
+//! points) and `pass.sampleCount` by the vertices that adds (∫ √ρ dA at one vertex per unit of
 //! area), within `maxSamples`. False when nothing is thin there or the budget is spent.
-bool raiseDensityOnThinParts(RemeshRun& run, const ThinPartFocus& focus, const ThinPartParams& params, int maxSamples,
-                             PassOutcome& report)
+bool raiseDensityOnThinParts(const PassContext& context, const ThinPartFocus& focus, const ThinPartParams& params, int maxSamples,
+                             PassInput& pass, PassOutcome& report)
 {
-    const TriMesh& surface = run.optSurface();
+    const TriMesh& surface = context.surface.mesh();
     bool raised = false;
-    run.pipeline.run("thickness", [&] {
-        const ThinPartDensity thin = thinPartDensity(surface, *run.tree, kWorkingEdgeLength, params, focus);
+    context.pipeline.run("thickness", [&] {
+        const ThinPartDensity thin = thinPartDensity(surface, *context.tree, kWorkingEdgeLength, params, focus);
         if (thin.mu.empty()) return;
-        std::vector<double> rho = run.rho.empty() ? std::vector<double>(size_t(surface.faceCount()), 1.0) : run.rho;
+        std::vector<double> rho = pass.rho.empty() ? std::vector<double>(size_t(surface.faceCount()), 1.0) : pass.rho;
         double before = 0, after = 0;
         for (int f = 0; f < surface.faceCount(); ++f) {
             const double a = faceArea(surface, f);
@@ -200,10 +186,10 @@ bool raiseDensityOnThinParts(RemeshRun& run, const ThinPartFocus& focus, const T
             after += a * std::sqrt(rho[f]);
         }
         // Within the budget: over it, every cell grows a little so that the count fits.
-        const int count = before > 0 ? std::min(maxSamples, static_cast<int>(std::lround(run.sampleCount * after / before))) : 0;
-        if (count <= run.sampleCount) return;
-        run.rho = std::move(rho);
-        run.sampleCount = count;
+        const int count = before > 0 ? std::min(maxSamples, static_cast<int>(std::lround(pass.sampleCount * after / before))) : 0;
+        if (count <= pass.sampleCount) return;
+        pass.rho = std::move(rho);
+        pass.sampleCount = count;
         report.thinFaces += thin.thinFaces;
         report.thinnest = report.thinFaces == thin.thinFaces ? thin.thinnest : std::min(report.thinnest, thin.thinnest);
         raised = true;
@@ -212,19 +198,20 @@ bool raiseDensityOnThinParts(RemeshRun& run, const ThinPartFocus& focus, const T
 }
 
 //! The warning of a kept later pass: how many vertices were added, where and why.
-std::string thinPartsWarning(const RemeshRun& run, const PassOutcome& first, const PassOutcome& kept)
+std::string thinPartsWarning(const PassContext& context, const PassOutcome& first, const PassOutcome& kept)
 {
-    const TopologySummary& in = run.result.inputTopology;
+    const TopologySummary& in = context.surface.inputTopology;
     char text[400];
     std::snprintf(text, sizeof text,
                   "%d vertices added where the surface is thinner than the edge length (%d faces, the thinnest %.3g "
                   "across): at %d vertices the output had genus %d, %d boundary loops, %d components against the "
                   "input's %d, %d, %d",
-                  kept.sampleCount - first.sampleCount, kept.thinFaces, kept.thinnest / run.frame.scale, first.sampleCount,
-                  first.topology.genus, first.topology.boundaryLoops, first.topology.components, in.genus, in.boundaryLoops,
-                  in.components);
+                  kept.input.sampleCount - first.input.sampleCount, kept.thinFaces, kept.thinnest / context.frame.scale,
+                  first.input.sampleCount, first.topology.genus, first.topology.boundaryLoops, first.topology.components,
+                  in.genus, in.boundaryLoops, in.components);
     std::string warning = text;
-    if (kept.sideAware) warning = "with cells kept to their own side of walls thinner than them (side-aware cells), " + warning;
+    if (kept.input.sideAwareCells)
+        warning = "with cells kept to their own side of walls thinner than them (side-aware cells), " + warning;
     if (first.lost.cells > 0)
         warning += ", and had lost about " + std::to_string(first.lost.cells) +
                    " cells' area of it (parts narrower than the edge length)";
@@ -238,17 +225,14 @@ namespace {
 //! The passes after the first, and the best of them so far.
 class ThinPartPasses {
 public:
-    ThinPartPasses(RemeshRun& run, PassOutcome&& first) : run_(run), first_(std::move(first))
+    ThinPartPasses(const PassContext& context, PassOutcome&& first) : context_(context), first_(std::move(first))
     {
-        // The warnings before the first optimisation: each pass adds its own after them.
-        before_.assign(first_.warnings.begin(), first_.warnings.begin() + static_cast<std::ptrdiff_t>(run.optimisationWarnings));
         // Samples within maxVertexFactor × N, and output vertices within kMaxOutputVertexFactor
         // × N: on thin walls a plain cell falls into a piece on each side and each piece makes a
-        // vertex (tray_bottom.stl at 554 samples: 1 020 vertices), so the samples may grow only
-        // as far as the vertices per sample of the pass they start from allow, and a pass over
-        // it is not kept.
-        maxVertices_ = static_cast<int>(std::floor(kMaxOutputVertexFactor * first_.sampleCount));
-        maxSampleFactorCount_ = static_cast<int>(std::floor(run.params.thinParts.maxVertexFactor * first_.sampleCount));
+        // vertex, so the samples may grow only as far as the vertices per sample of the pass they
+        // start from allow, and a pass over it is not kept.
+        maxVertices_ = static_cast<int>(std::floor(kMaxOutputVertexFactor * first_.input.sampleCount));
+        maxSampleFactorCount_ = static_cast<int>(std::floor(context.params.thinParts.maxVertexFactor * first_.input.sampleCount));
     }
 
     //! Passes with more vertices on thin parts, from the first pass's density: with plain cells,
@@ -260,30 +244,33 @@ public:
         // Only on closed shells (solids: walls) where plain cells fell into pieces (each piece
         // an RDT vertex): cells reaching across walls thinner than them, what side-aware cells
         // change.
-        const double piecesPerSample = double(first_.mesh.vertexCount()) / std::max(1, first_.sampleCount);
-        if (base(false).distance == 0 || run_.result.inputTopology.boundaryLoops > 0 ||
+        const double piecesPerSample = double(first_.mesh().vertexCount()) / std::max(1, first_.input.sampleCount);
+        if (base(false).distance == 0 || context_.surface.inputTopology.boundaryLoops > 0 ||
             piecesPerSample < kSideAwareMinPiecesPerSample)
             return;
         sameDensityPass(true);
         densityPasses(true);
         PassOutcome& side = best_[1];
-        if (side.sampleCount > 0 && (best_[0].sampleCount == 0 || better(side, best_[0]))) best_[0] = std::move(side);
+        if (side.made() && (!best_[0].made() || better(side, best_[0]))) best_[0] = std::move(side);
     }
 
-    //! Leaves the best pass (or the first) in `run`, with its warning and report.
-    void finish()
+    //! The best pass (or the first), with its warning and report.
+    ThinPartsOutcome finish()
     {
-        RemeshResult& result = run_.result;
+        ThinPartsOutcome out;
         PassOutcome& best = best_[0];
-        if (best.sampleCount == 0) return restoreOutcome(run_, std::move(first_));
-        result.thinParts.added = best.sampleCount - first_.sampleCount;
-        result.thinParts.faces = best.thinFaces;
-        result.thinParts.thinnest = best.thinnest / run_.frame.scale;
-        result.thinParts.capped = best.sampleCount >= maxSampleFactorCount_ || best.mesh.vertexCount() >= 0.97 * maxVertices_;
-        result.thinParts.sideAwareCells = best.sideAware;
-        const std::string warning = thinPartsWarning(run_, first_, best);
-        restoreOutcome(run_, std::move(best));
-        result.warnings.insert(result.warnings.begin() + static_cast<std::ptrdiff_t>(before_.size()), warning);
+        if (!best.made()) {
+            out.pass = std::move(first_.result);
+            return out;
+        }
+        out.report.added = best.input.sampleCount - first_.input.sampleCount;
+        out.report.faces = best.thinFaces;
+        out.report.thinnest = best.thinnest / context_.frame.scale;
+        out.report.capped = best.input.sampleCount >= maxSampleFactorCount_ || best.mesh().vertexCount() >= 0.97 * maxVertices_;
+        out.report.sideAwareCells = best.input.sideAwareCells;
+        out.warning = thinPartsWarning(context_, first_, best);
+        out.pass = std::move(best.result);
+        return out;
     }
 
 private:
@@ -291,39 +278,26 @@ private:
     const PassOutcome& base(bool sideAware) const
     {
         const PassOutcome& best = best_[sideAware ? 1 : 0];
-        return best.sampleCount > 0 ? best : first_;
+        return best.made() ? best : first_;
     }
 
     //! Whether `outcome` replaces `base`: nearer the input's topology, within the vertex budget
     //! (the RDT's count: the valence stage's splits and collapses change it by a percent or
     //! so), without slivers the first pass did not have. A side-aware pass must not trade
-    //! topology for lost surface (measured: otherwise adis16480 at 459 vertices lost its
-    //! genus 4 and greek_helmet fell into 12 pieces, for fewer lost cells).
+    //! topology for lost surface (docs/tuning.md).
     bool better(PassOutcome& outcome, const PassOutcome& base)
     {
-        if (!(outcome.distance < base.distance && outcome.mesh.vertexCount() <= maxVertices_)) return false;
-        if (outcome.sideAware && outcome.topologyDistance > base.topologyDistance) return false;
-        measureShape(run_, first_);
-        measureShape(run_, outcome);
+        if (!(outcome.distance < base.distance && outcome.mesh().vertexCount() <= maxVertices_)) return false;
+        if (outcome.input.sideAwareCells && outcome.topologyDistance > base.topologyDistance) return false;
+        measureShape(context_, first_);
+        measureShape(context_, outcome);
         return outcome.smallestAngle >= std::min(first_.smallestAngle, kThinPassSmallestAngle) &&
                outcome.shareUnder30 <= std::max(first_.shareUnder30, kThinPassShareUnder30);
     }
 
-    PassOutcome optimiseAndExtract()
+    PassOutcome optimiseAndExtract(const PassInput& input)
     {
-        setUpEnergy(run_);
-        placeSamples(run_);
-        optimiseSamples(run_);
-        extractMesh(run_);
-        return takeOutcome(run_);
-    }
-
-    void startFrom(const PassOutcome& base, bool sideAware)
-    {
-        run_.result.warnings = before_;
-        run_.sampleCount = base.sampleCount;
-        run_.rho = base.rho;
-        run_.sideAwareCells = sideAware;
+        return takeOutcome(context_, fieldcvt::optimiseAndExtract(context_, input), input);
     }
 
     //! The best density so far again, with side-aware cells: a sample then owns nothing of the
@@ -331,8 +305,9 @@ private:
     void sameDensityPass(bool sideAware)
     {
         const PassOutcome& base = this->base(sideAware);
-        startFrom(base, sideAware);
-        PassOutcome outcome = optimiseAndExtract();
+        PassInput input = base.input;
+        input.sideAwareCells = sideAware;
+        PassOutcome outcome = optimiseAndExtract(input);
         outcome.thinFaces = base.thinFaces;
         outcome.thinnest = base.thinnest;
         if (better(outcome, base)) best_[sideAware ? 1 : 0] = std::move(outcome);
@@ -342,38 +317,38 @@ private:
     //! pass's tears and lost surface, then everywhere, each asking more of the thin parts.
     void densityPasses(bool sideAware)
     {
-        ThinPartParams params = run_.params.thinParts;
+        ThinPartParams params = context_.params.thinParts;
         int passesInVain = 0;
         for (int pass = 0; pass < kExtraPasses && passesInVain < kMaxPassesInVain; ++pass) {
             const PassOutcome& base = this->base(sideAware);
             if (base.distance == 0) break;
             ThinPartFocus focus;
             if (pass == 0) {
-                focus.points = tornBorderPoints(base.mesh, run_.border);
+                focus.points = tornBorderPoints(base.mesh(), context_.surface.border);
                 focus.points.insert(focus.points.end(), base.lost.points.begin(), base.lost.points.end());
                 focus.radius = kTearFocusEdges * kWorkingEdgeLength;
                 if (focus.points.empty()) continue;  // nothing tore or was lost (a genus lost): the next passes
             }
-            startFrom(base, sideAware);
+            PassInput input = base.input;
+            input.sideAwareCells = sideAware;
             PassOutcome measured;
             measured.thinFaces = base.thinFaces;
             measured.thinnest = base.thinnest;
-            const double verticesPerSample = std::max(1.0, double(base.mesh.vertexCount()) / std::max(1, base.sampleCount));
+            const double verticesPerSample =
+                std::max(1.0, double(base.mesh().vertexCount()) / std::max(1, base.input.sampleCount));
             const int maxSamples =
                 std::min(maxSampleFactorCount_, static_cast<int>(std::floor(maxVertices_ / verticesPerSample)));
-            const bool raised = raiseDensityOnThinParts(run_, focus, params, maxSamples, measured);
+            const bool raised = raiseDensityOnThinParts(context_, focus, params, maxSamples, input, measured);
             params.edgePerThickness /= kEdgeShrinkPerPass;
             params.edgePerStripWidth /= kEdgeShrinkPerPass;
             if (!raised) continue;
-            PassOutcome outcome = optimiseAndExtract();
-            if (outcome.distance < base.distance && outcome.mesh.vertexCount() > maxVertices_) {
+            PassOutcome outcome = optimiseAndExtract(input);
+            if (outcome.distance < base.distance && outcome.mesh().vertexCount() > maxVertices_) {
                 // Nearer, but over the budget (the vertices per sample grew with the density):
-                // the same density once more with proportionally fewer samples (greek_helmet.obj
-                // at 627, seed 2: 1 301 vertices for 1 254 allowed, the parts whole).
-                run_.result.warnings = before_;
-                run_.sampleCount = static_cast<int>(
-                    std::floor(run_.sampleCount * kBudgetRetryShare * maxVertices_ / outcome.mesh.vertexCount()));
-                outcome = optimiseAndExtract();
+                // the same density once more with proportionally fewer samples.
+                input.sampleCount = static_cast<int>(
+                    std::floor(input.sampleCount * kBudgetRetryShare * maxVertices_ / outcome.mesh().vertexCount()));
+                outcome = optimiseAndExtract(input);
             }
             outcome.thinFaces = measured.thinFaces;
             outcome.thinnest = measured.thinnest;
@@ -386,25 +361,31 @@ private:
         }
     }
 
-    RemeshRun& run_;
+    const PassContext& context_;
     PassOutcome first_;
-    PassOutcome best_[2];  // the best later pass with plain and side-aware cells (sampleCount 0: none yet)
-    std::vector<std::string> before_;
+    PassOutcome best_[2];  // the best later pass with plain and side-aware cells (none made yet: !made())
     int maxVertices_ = 0, maxSampleFactorCount_ = 0;
 };
 
 }  // namespace
 
-void remeshThinPartsAgain(RemeshRun& run)
+ThinPartsOutcome remeshThinPartsAgain(PassResult first, const PassInput& firstInput, const PassContext& context)
 {
-    const RemeshParams& p = run.params;
-    if (p.exactCount || !p.initialSamples.empty() || run.result.mesh.faces.empty()) return;
-    PassOutcome first = takeOutcome(run);  // its topology and lost surface measured once
-    if (!thinPartsMayMend(first.topology, run.result.inputTopology) && first.lost.points.empty())
-        return restoreOutcome(run, std::move(first));
-    ThinPartPasses passes(run, std::move(first));
+    const RemeshParams& p = context.params;
+    if (p.exactCount || !p.initialSamples.empty() || first.extracted.mesh.faces.empty()) {
+        ThinPartsOutcome out;
+        out.pass = std::move(first);
+        return out;
+    }
+    PassOutcome measured = takeOutcome(context, std::move(first), firstInput);  // topology and lost surface, once
+    if (!thinPartsMayMend(measured.topology, context.surface.inputTopology) && measured.lost.points.empty()) {
+        ThinPartsOutcome out;
+        out.pass = std::move(measured.result);
+        return out;
+    }
+    ThinPartPasses passes(context, std::move(measured));
     passes.runAll();
-    passes.finish();
+    return passes.finish();
 }
 
 }  // namespace fieldcvt
