@@ -1,8 +1,10 @@
 #pragma once
-// Internals of fcvt_io shared by the per-format readers and writers (not installed, not API).
+// Internals of fcvt_io that the per-format readers and writers (formats.h) and the dispatch
+// (mesh_io.cpp) share: file bytes in and out, polygons and their texture corners (not installed,
+// not API). Defined in io_detail.cpp.
 #include "mesh.h"
+#include "mesh_io_types.h"
 #include "mesh_texture.h"
-#include "mesh_io.h"
 
 #include <string>
 #include <vector>
@@ -27,22 +29,5 @@ void appendCornerTexture(const TriMesh& mesh, std::size_t firstFace, const std::
 bool replacedOnWrite(const std::string& path);
 //! Writes `bytes` to `path` (replacing it, see replacedOnWrite); throws IOError on any failure.
 void writeFileBytes(const std::string& path, const std::string& bytes);
-
-// Readers, one per format. `path` is only used in messages (and by vcglib to open the file).
-//! With `texture`, also keeps the `vt` corners, materials and `mtllib` names (dropped with a warning when broken).
-TriMesh readObj(const std::string& path, const std::string& text, MeshReadInfo& info, MeshTexture* texture);
-TriMesh readOff(const std::string& path, const std::string& text, MeshReadInfo& info);
-//! Also fills `attributes` (normals, rosy) from the vertex properties the file has, and with
-//! `texture` MeshLab's face `texcoord` lists, `texnumber` and `TextureFile` comments.
-TriMesh readPly(const std::string& path, const std::string& bytes, MeshReadInfo& info, VertexAttributes& attributes,
-                MeshTexture* texture);
-TriMesh readStl(const std::string& path, const std::string& bytes, MeshReadInfo& info);
-
-// Writers, one per format; they never see an attribute vector of the wrong size.
-// A non-empty `texture` fits `mesh` (checked by writeMesh).
-void writePly(const std::string& path, const TriMesh& mesh, const VertexAttributes& attributes, const MeshTexture& texture);
-void writeObj(const std::string& path, const TriMesh& mesh, const VertexAttributes& attributes, const MeshTexture& texture);
-void writeOff(const std::string& path, const TriMesh& mesh);
-void writeStl(const std::string& path, const TriMesh& mesh);
 
 }  // namespace fieldcvt::io_detail

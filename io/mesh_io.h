@@ -2,33 +2,13 @@
 // Mesh files <-> fieldcvt::TriMesh, through vcglib's wrap/io_trimesh (PLY, OFF, STL) and a tolerant
 // OBJ reader. Kept out of core/ so the engine has no vcglib dependency.
 #include "mesh.h"
+#include "mesh_io_types.h"
 #include "mesh_texture.h"
 
 #include <string>
 #include <vector>
 
 namespace fieldcvt {
-
-//! What the reader noticed and did (reported by the CLI, never silent).
-struct MeshReadInfo {
-    int polygonsTriangulated = 0;       //!< faces with more than 3 corners split into triangles
-    int polygonsNotSimple = 0;          //!< of the faces, those whose edges cross or touch (triangulate.h)
-    std::vector<std::string> notes;     //!< information: the mesh is what the file says
-    std::vector<std::string> warnings;  //!< the mesh read differs from what the file says
-};
-
-//! Optional per-vertex data next to the geometry (PLY writes all, others what they can; only
-//! PLY files are read back with them).
-struct VertexAttributes {
-    std::vector<Vec3> normals;  //!< "nx ny nz"
-    std::vector<Vec3> rosy;     //!< "rosy_x rosy_y rosy_z" (PLY only): the 6-RoSy field's representative
-    //! Reading: the name of a scalar PLY face property to read into faceValues (empty: none);
-    //! writing (PLY): the name faceValues is written under ("quality" when empty).
-    std::string faceProperty;
-    //! One value per triangle (a polygon's value on each of its triangles), e.g. MeshLab's face
-    //! quality; written as a float face property when not empty.
-    std::vector<double> faceValues;
-};
 
 //! Reads PLY/OBJ/OFF/STL by extension (case-insensitive). Throws IOError with one clear line
 //! for a missing, unreadable, truncated or malformed file, or one with no triangles.

@@ -1,6 +1,7 @@
 // A tolerant Wavefront OBJ reader of our own: MeshLab 2020.09's vcglib importer aborts on files
 // with `f a//n` corners, normals and CRLF line ends, which are common in the wild.
 #include "errors.h"
+#include "formats.h"
 #include "io_detail.h"
 #include "text_scan.h"
 

@@ -2,6 +2,7 @@
 // check and reads the first token of an empty line at a truncated end (undefined behaviour, a
 // crash at best), so it cannot be given untrusted files.
 #include "errors.h"
+#include "formats.h"
 #include "io_detail.h"
 #include "text_scan.h"
 

@@ -3,6 +3,7 @@
 // their length, reads int-counted index lists into a fixed 512-entry array, and calls atoi on a
 // missing element count; and ImporterPLY leaves some polygon indices unchecked.
 #include "errors.h"
+#include "formats.h"
 #include "io_detail.h"
 #include "text_scan.h"
 

@@ -3,6 +3,7 @@
 // after its "endfacet" (no newline, no "endsolid"), reads coordinates as float and loops forever
 // on a file without a line end; its binary one over-reads the label.
 #include "errors.h"
+#include "formats.h"
 #include "io_detail.h"
 #include "text_scan.h"
 #include "vcg_mesh.h"

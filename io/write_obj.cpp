@@ -1,5 +1,6 @@
 // Wavefront OBJ writer: shortest round-trip decimal numbers (std::to_chars), locale-independent
 // and byte-deterministic.
+#include "formats.h"
 #include "io_detail.h"
 
 #include <charconv>

@@ -1,5 +1,6 @@
 // Binary little-endian PLY written by hand: vcglib's exporter cannot add the custom per-vertex
 // properties (rosy_x rosy_y rosy_z) without a vcg attribute plumbing of its own.
+#include "formats.h"
 #include "io_detail.h"
 
 #include <cstdint>

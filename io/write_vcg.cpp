@@ -1,5 +1,6 @@
 // OFF and STL through vcglib's wrap/io_trimesh exporters (both deterministic: fixed STL header,
 // printf with a fixed precision for OFF).
+#include "formats.h"
 #include "io_detail.h"
 #include "vcg_mesh.h"
 
