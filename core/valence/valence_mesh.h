@@ -6,7 +6,8 @@
 #include "closest_point.h"
 #include "editable_mesh.h"
 #include "triangle_shape.h"
-#include "valence.h"
+#include "valence/surface.h"
+#include "valence_params.h"
 
 #include <memory>
 #include <vector>
