@@ -3,6 +3,7 @@
 #include "boundary.h"
 #include "energy.h"
 #include "interpolation.h"
+#include "valence/tuning.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,18 +11,6 @@
 namespace fieldcvt::valence {
 
 namespace {
-
-// Tuning (the measurements: docs/tuning.md).
-//! A vertex moves at most this many mean edge lengths from where it started (off ridges and tips).
-constexpr double kMaxDrift = 1.0;
-//! ... and at most this fraction of the mean edge length per step.
-constexpr double kMaxRelaxStep = 0.25;
-//! Step down the shape energy, in mean incident face areas times its gradient (~ a Newton step).
-constexpr double kShapeStep = 0.25;
-//! Heavy-ball momentum: the shape energy's smooth modes converge slowly under plain Jacobi steps.
-constexpr double kRelaxMomentum = 0.8;
-//! The fold limit (~45°): looser than the operations', the moves are small and the connectivity fixed.
-constexpr double kRelaxMinNormalDot = 0.7;
 
 //! What the relaxation carries from one step to the next.
 struct Relaxation {

@@ -2,6 +2,7 @@
 
 #include "boundary.h"
 #include "triangle_shape.h"
+#include "valence/tuning.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,31 +12,6 @@
 namespace fieldcvt::valence {
 
 namespace {
-
-// Tuning (the measurements: docs/tuning.md).
-//! Angle repair: rounds over the corners still under the minimum angle.
-constexpr int kAngleRepairRounds = 8;
-//! The repairs' pattern search: first step in mean edge lengths (halved when nothing improves)...
-constexpr double kAngleRepairStep = 0.1;
-//! ... within this many edge lengths of where the vertex was...
-constexpr double kAngleRepairDrift = 0.3;
-//! ... and at most this many steps for the angle repair (each accepted one raises the angle).
-constexpr int kAngleRepairMaxSteps = 64;
-//! Sag repair: rounds, the largest sag measured again before each.
-constexpr int kSagRepairRounds = 4;
-//! The faces whose sag is within this fraction of the largest are repaired, down to the band's lower edge.
-constexpr double kSagRepairBand = 0.05;
-//! At most this many faces per round.
-constexpr int kSagRepairFaces = 64;
-//! Pattern steps per vertex (down to 1/8 of the first).
-constexpr int kSagRepairMaxSteps = 12;
-//! The mean of the vertex's faces' mean ratio may drop by at most this much.
-constexpr double kSagRepairShapeLoss = 0.003;
-//! No face's smallest angle under min(minAngleDegrees + this, its own before): room for the
-//! projection onto the input that follows.
-constexpr double kSagRepairAngleMargin = 3.0;
-//! Only where the largest sag is at least this many edge lengths (a flat mesh's sags are rounding).
-constexpr double kSagRepairMinSag = 0.005;
 
 //! Whether the repairs may move v: a live Free vertex with a single fan of faces.
 bool repairMovable(const ValenceMesh& mesh, int v)

@@ -1,6 +1,7 @@
 #include "valence/sag_guard.h"
 
 #include "mesh_edges.h"
+#include "valence/tuning.h"
 
 #include <algorithm>
 #include <limits>
@@ -8,18 +9,6 @@
 namespace fieldcvt::valence {
 
 namespace {
-
-// Tuning (the measurements: docs/tuning.md).
-//! A face may always sag this many mean edge lengths: the floor of every limit.
-constexpr double kMaxSag = 0.1;
-//! An operation may let the faces around it sag 1.5× their largest sag before...
-constexpr double kOperationSagGrowth = 1.5;
-//! ... but by at most this many edge lengths more: a run of operations must not ratchet a tip off.
-constexpr double kOperationSagStep = 0.1;
-//! The relaxation and the angle repair let a face sag 1.25× its sag at their start.
-constexpr double kRelaxSagGrowth = 1.25;
-//! In the relaxation any face may sag up to half the largest start sag (about what d_H measures).
-constexpr double kRelaxSagShareOfLargest = 0.5;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 

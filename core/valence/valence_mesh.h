@@ -7,15 +7,13 @@
 #include "editable_mesh.h"
 #include "triangle_shape.h"
 #include "valence/surface.h"
+#include "valence/tuning.h"
 #include "valence_params.h"
 
 #include <memory>
 #include <vector>
 
 namespace fieldcvt::valence {
-
-//! Operations and repairs: a face turned more than ~32° from the surface normal counts as folded.
-constexpr double kMinNormalDot = 0.85;
 
 //! What each vertex of the optimised mesh carries besides its position.
 struct MeshVertex {
