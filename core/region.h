@@ -15,6 +15,7 @@
 #include "mesh.h"
 #include "metrics.h"
 #include "remesh.h"
+#include "repair.h"  // repairRegion repairs as repairMesh does
 
 #include <cstdint>
 #include <string>
