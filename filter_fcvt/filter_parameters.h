@@ -9,7 +9,7 @@
 #include <iterator>
 #include <vector>
 
-#include "fcvt_filters.h"
+#include "filter_types.h"
 #include "field.h"
 #include "remesh.h"
 

@@ -1,10 +1,10 @@
 #pragma once
 // One run of a filter: the typed bodies of the three filters over MeshLab's document, with the
-// plugin's log. fcvt_filters.cpp holds the field and quality filters and the shared helpers,
+// plugin's log. filter_run.cpp holds the field and quality filters and the shared helpers,
 // filter_remesh.cpp the remeshing.
 #include <QString>
 
-#include "fcvt_filters.h"
+#include "filter_types.h"
 #include "field.h"
 #include "log_text.h"
 #include "mesh.h"

@@ -1,0 +1,239 @@
+// The field and quality filters, and the helpers every filter run shares (filter_run.h); the
+// remeshing is filter_remesh.cpp.
+#include "filter_run.h"
+
+#include <vcg/complex/allocate.h>
+
+#include <QApplication>
+#include <QFileInfo>
+#include <QPointer>
+#include <QTimer>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <exception>
+#include <iterator>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "closest_point.h"
+#include "errors.h"
+#include "field_of_input.h"
+#include "field.h"
+#include "field_drawing.h"
+#include "filter_parameters.h"
+#include "layer_data.h"
+#include "log_text.h"
+#include "mesh_check.h"
+#include "mesh_convert.h"
+#include "metrics.h"
+#include "progress.h"
+#include "remesh.h"
+#include "valence_colour.h"
+#include "working_frame.h"
+
+namespace fcvt_plugin {
+
+bool FilterRun::applyQuality(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb)
+{
+    MeshModel* mesh = currentTriangleLayer(md);
+    if (mesh == nullptr) return false;
+    MeshModel* reference = par.getMesh(kReferenceLayer);
+    return qualityReport(*mesh, reference == mesh ? nullptr : reference, par.getBool(kColorIrregular), cb);
+}
+
+bool FilterRun::applyField(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb)
+{
+    const int fieldSource = par.getEnum(kFieldSource);
+    const int seed = par.getInt(kSeed);
+    checkFieldSourceAndSeed(fieldSource, kComputedFieldSources, seed);
+
+    fieldcvt::FieldParams params;
+    params.source = kFieldSources[fieldSource].source;
+    params.seed = static_cast<std::uint64_t>(seed);
+    const int maxCrosses = par.hasParameter(kMaxCrosses) ? par.getInt(kMaxCrosses) : kDefaultMaxCrosses;
+    if (maxCrosses < 1)
+        return fail(QString("FCVT: %1 must be at least 1 (got %2)").arg(parameterName(kMaxCrosses)).arg(maxCrosses));
+    return computeRosyField(md, params, maxCrosses, cb);
+}
+
+MeshModel* FilterRun::currentTriangleLayer(MeshDocument& md)
+{
+    MeshModel* input = md.mm();
+    if (input == nullptr) {
+        fail("FCVT: no mesh loaded");
+        return nullptr;
+    }
+    if (input->cm.fn == 0) {
+        fail(QString("FCVT: layer '%1' has no faces; a triangle mesh is required").arg(input->label()));
+        return nullptr;
+    }
+    return input;
+}
+
+fieldcvt::TriMesh FilterRun::surfaceOf(const MeshModel& layer, bool keepFaces)
+{
+    int flipped = 0;
+    fieldcvt::TriMesh mesh = fcvt_plugin::toSurfaceMesh(layer.cm, flipped);
+    // The coordinates the command line would read from the same file.
+    std::vector<fieldcvt::Face> fileFaces;
+    const fcvt_plugin::FilePrecision precision =
+        fcvt_plugin::fullPrecisionCoordinates(layer.fullName().toStdString(), mesh, &fileFaces);
+    // MeshLab's PLY importer fans polygons from their first corner, which folds concave ones (a C
+    // shape's cap came out at 1.6 times its area, a lobed one lost 512 of 1196 triangles): the
+    // readers' triangulation instead, when the layer is the file's (its vertices as read).
+    if (!keepFaces && !fileFaces.empty() && fileFaces != mesh.faces) {
+        mesh.faces = std::move(fileFaces);
+        flipped = 0;  // the readers' triangles have no zero-area fan triangle to flip
+        logInfo(QString("FCVT input: the polygons of '%1' triangulated as the command line does (MeshLab's fans "
+                        "fold concave polygons)")
+                    .arg(layer.fullName()));
+    }
+    if (precision == fcvt_plugin::FilePrecision::Restored)
+        logInfo(QString("FCVT input: the double-precision coordinates of '%1' (MeshLab holds them in single precision; "
+                        "the layer is as it was read), as the command line reads them")
+                    .arg(layer.fullName()));
+    else if (precision == fcvt_plugin::FilePrecision::NotTheFile && sizeof(Scalarm) == sizeof(float))
+        logInfo(QString("FCVT input: the layer's single-precision coordinates ('%1' differs from the layer: edited "
+                        "since it was read?); the command line, reading the file, may give another mesh")
+                    .arg(layer.fullName()));
+    if (flipped > 0)
+        logWarning(QString("FCVT input: flipped %1 zero-area triangles of '%2' into their neighbours (a fan "
+                           "over a polygon's straight corner; removing them would tear the surface)")
+                       .arg(flipped)
+                       .arg(layer.label()));
+    return mesh;
+}
+
+bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& params, int maxCrosses, vcg::CallBackPos* cb)
+{
+    MeshModel* input = currentTriangleLayer(md);
+    if (input == nullptr) return false;
+    const bool inputWasModified = input->meshModified();
+
+    if (cb != nullptr) cb(0, "checking the input");
+    const fieldcvt::TriMesh in = surfaceOf(*input);
+    if (cb != nullptr) cb(10, "computing the 6-RoSy field");
+    // As `fcvt field` and the remeshing do: on the surface centred and scaled to unit cells.
+    const fieldcvt::InputField computed = fieldcvt::fieldOfInput(in, params);
+    const fieldcvt::InputReport& report = computed.report;
+    const fieldcvt::TriMesh& clean = computed.clean;
+    const fieldcvt::DirectionField& field = computed.field;
+    const std::vector<fieldcvt::Singularity>& singularities = computed.singularities;
+
+    // Everything is computed: now change the document. The drawing layer is removed again if
+    // filling it fails; the attribute is written last.
+    if (cb != nullptr) cb(90, "drawing the field");
+    MeshModel* drawing = md.addNewMesh("", kFieldLayerLabel, false);
+    fcvt_plugin::FieldDrawingStats stats;
+    try {
+        stats = fcvt_plugin::drawField(clean, field, drawing->cm, maxCrosses);
+        drawing->updateDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_COLOR);
+        drawing->cm.Tr = input->cm.Tr;
+        updateBoxAndNormals(*drawing);
+    } catch (...) {
+        removeLayer(md, drawing);
+        md.setCurrentMesh(input->id());
+        throw;
+    }
+
+    auto rosy = pointAttribute(input->cm, kRosyAttribute);
+    size_t live = 0;
+    for (auto vi = input->cm.vert.begin(); vi != input->cm.vert.end(); ++vi) {
+        if (vi->IsD()) continue;
+        const int c = report.cleanIndex[live++];
+        rosy[vi] = c >= 0 ? toPoint3m(field.directions[size_t(c)]) : Point3m(0, 0, 0);
+    }
+    if (cb != nullptr) cb(100, "6-RoSy field done");
+    if (!inputWasModified) keepUnmodified(md, input->id());
+
+    // What the input check would repair is not an error here: the layer is not changed, the
+    // field just leaves those elements out (information, not a warning).
+    const QStringList ignored = fcvt_plugin::fieldIgnoredText(report);
+    if (!ignored.isEmpty())
+        logInfo(
+            QString("FCVT field: the layer '%1' is unchanged; the field leaves out %2").arg(input->label(), ignored.join("; ")));
+    logInfo(QString("FCVT field: %1 (seed %2) on layer '%3': %4; stored as the per-vertex attribute "
+                    "'%5'")
+                .arg(kFieldSources[fieldSourceIndex(params.source)].label)
+                .arg(qulonglong(params.seed))
+                .arg(input->label())
+                .arg(singularitySummary(singularities, fieldcvt::computeTopology(clean)))
+                .arg(kRosyAttribute));
+    logInfo(QString("FCVT field: new layer '%1': crosses at %2 of %3 vertices (%4 at most%5), "
+                    "segments %6 long on average (mean edge %7), lifted %8 x their length off the "
+                    "surface")
+                .arg(drawing->label())
+                .arg(stats.drawnVertices)
+                .arg(clean.vertexCount())
+                .arg(maxCrosses)
+                .arg(stats.spacing > 0 ? QString(", one per grid cell of %1").arg(num(stats.spacing)) : QString(", every vertex"))
+                .arg(num(stats.meanSegmentLength))
+                .arg(num(stats.meanEdgeLength))
+                .arg(fcvt_plugin::kLift));
+    return true;
+}
+
+void FilterRun::keepUnmodified(MeshDocument& md, int layerId)
+{
+    // MeshLab 2020.09's GUI marks the current layer modified after every filter that succeeds
+    // (MainWindow::executeFilter: meshDoc()->mm()->setMeshModified()). The field filter only
+    // adds the attribute `rosy` to it, so the mark is taken back once control returns to the
+    // event loop, and the layer list is redrawn (its public slot updateLayerDialog). Without an
+    // event loop (meshlabserver) this never runs, and nothing needs it.
+    QPointer<MeshDocument> document(&md);
+    QTimer::singleShot(0, qApp, [document, layerId]() {
+        if (document.isNull()) return;
+        if (MeshModel* m = document->getMesh(layerId)) m->setMeshModified(false);
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (w->inherits("MainWindow")) QMetaObject::invokeMethod(w, "updateLayerDialog", Qt::QueuedConnection);
+    });
+}
+
+bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorIrregular, vcg::CallBackPos* cb)
+{
+    if (reference != nullptr && reference->cm.fn == 0)
+        return fail(QString("FCVT: the reference layer '%1' has no faces; choose a triangle mesh, or "
+                            "the measured layer itself for no distances")
+                        .arg(reference->label()));
+    if (cb != nullptr) cb(0, "FCVT: measuring quality");
+    const fieldcvt::TriMesh measured = fcvt_plugin::toTriMesh(mesh.cm);
+    const fieldcvt::QualityMetrics quality = fieldcvt::computeQuality(measured);
+    const fieldcvt::TopologySummary topology = fieldcvt::computeTopology(measured);
+    fieldcvt::DistanceMetrics distance;
+    if (reference != nullptr) {
+        if (cb != nullptr) cb(20, "FCVT: measuring distances");
+        const fieldcvt::TriMesh ref = fcvt_plugin::toTriMesh(reference->cm);
+        distance = fieldcvt::computeDistance(measured, ref, distanceSamples(measured, ref));
+    }
+    // Measured before anything changes: a failure above leaves the layer as it was.
+    QString colours;
+    if (colorIrregular) colours = applyValenceColours(measured, mesh);
+    if (cb != nullptr) cb(100, "FCVT: quality report done");
+
+    logInfo(QString("FCVT quality of '%1': %2 vertices, %3 faces").arg(mesh.label()).arg(quality.vertices).arg(quality.faces));
+    logInfo("FCVT quality: " + qualityText(quality));
+    if (reference != nullptr) {
+        logInfo(QString("FCVT quality: d_RMS %1, d_H %2 (fractions of the bounding-box diagonal of '%3')")
+                    .arg(num(distance.rms))
+                    .arg(num(distance.hausdorff))
+                    .arg(reference->label()));
+        if (mesh.cm.Tr != reference->cm.Tr)
+            logWarning(QString("FCVT quality: '%1' and '%2' have different transformation matrices; the "
+                               "distances are between the stored coordinates")
+                           .arg(mesh.label(), reference->label()));
+    } else {
+        logInfo("FCVT quality: d_RMS and d_H not measured (the reference layer is the measured layer)");
+    }
+    logInfo("FCVT quality topology: " + topologyText(topology));
+    if (colorIrregular) logInfo("FCVT valence colours: " + colours);
+    return true;
+}
+
+void FilterRun::logInfo(const QString& line) { log_.info(plainLogText(line)); }
+
+void FilterRun::logWarning(const QString& line) { log_.warning(plainLogText(line)); }
+
+}  // namespace fcvt_plugin
