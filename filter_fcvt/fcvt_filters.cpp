@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "filter_parameters.h"
 #include "filter_run.h"
+#include "log_text.h"
 
 namespace fcvt_plugin {
 
@@ -120,6 +121,23 @@ QString unexpectedFailure(const std::exception* e)
     // log as raw control characters.
     return e != nullptr ? QString("FCVT: %1").arg(QString::fromStdString(fieldcvt::escapeControlCharacters(e->what())))
                         : QString("FCVT: unknown error");
+}
+
+bool runFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb, QString& failure)
+{
+    try {
+        applyFilter(filter, md, par, log, cb);
+        return true;
+    } catch (const FilterFailure& e) {
+        failure = e.message();
+    } catch (const std::exception& e) {
+        failure = unexpectedFailure(&e);
+    } catch (...) {
+        failure = unexpectedFailure(nullptr);
+    }
+    failure = plainLogText(failure);
+    log.warning(failure);
+    return false;
 }
 
 }  // namespace fcvt_plugin

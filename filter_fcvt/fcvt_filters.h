@@ -41,4 +41,12 @@ void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, Filt
 //! The message for an unexpected exception (anything but FilterFailure).
 QString unexpectedFailure(const std::exception* e);
 
+//! applyFilter for the glue, which must let nothing escape into MeshLab (MeshLab 2020.09's GUI
+//! catches only std::bad_alloc and meshlabserver nothing at all; 2022.02 ends on anything but
+//! its MLException): true when the filter ran. Otherwise false, and `failure` holds the message
+//! as a log line (plainLogText), already logged as a warning; the glue reports it its MeshLab's
+//! way (2020.09: errorMessage, since meshlabserver prints the log but never errorMsg();
+//! 2022.02: an MLException).
+bool runFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb, QString& failure);
+
 }  // namespace fcvt_plugin

@@ -1,15 +1,13 @@
 #include "filter_fcvt_plugin.h"
 
-#include <exception>
 #include <functional>
 #include <string>
 
-#include "../fcvt_filters.h"
-#include "../log_text.h"
+#include "../plugin_glue.h"
 
 namespace {
 
-fcvt_plugin::FilterId filterId(int id) { return static_cast<fcvt_plugin::FilterId>(id); }
+using fcvt_plugin::glue::filterId;
 
 // The neutral parameter definitions as MeshLab 2020.09's Rich* parameters.
 void addRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, MeshDocument* md, MeshModel* current,
@@ -36,20 +34,11 @@ void addRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, MeshDocum
     }
 }
 
-class Values : public fcvt_plugin::ParamValues {
+// A mesh parameter holds the layer itself.
+class Values : public fcvt_plugin::glue::RichValues<RichParameterList> {
 public:
-    explicit Values(const RichParameterList& par) : par_(par) {}
-    bool hasParameter(const char* name) const override { return par_.hasParameter(name); }
-    bool isBool(const char* name) const override { return par_.getParameterByName(name).value().isBool(); }
-    int getInt(const char* name) const override { return par_.getInt(name); }
-    double getFloat(const char* name) const override { return fcvt_plugin::typedValue(par_.getFloat(name)); }
-    bool getBool(const char* name) const override { return par_.getBool(name); }
-    int getEnum(const char* name) const override { return par_.getEnum(name); }
-    double getAbsPerc(const char* name) const override { return fcvt_plugin::typedValue(par_.getAbsPerc(name)); }
+    using RichValues::RichValues;
     MeshModel* getMesh(const char* name) const override { return par_.getMesh(name); }
-
-private:
-    const RichParameterList& par_;
 };
 
 }  // namespace
@@ -79,12 +68,7 @@ QString FilterFcvtPlugin::filterInfo(FilterIDType filter) const { return fcvt_pl
 
 MeshFilterInterface::FilterClass FilterFcvtPlugin::getClass(QAction* a)
 {
-    switch (fcvt_plugin::filterKind(filterId(ID(a)))) {
-    case fcvt_plugin::FilterKind::Remeshing: return MeshFilterInterface::Remeshing;
-    case fcvt_plugin::FilterKind::Normal: return MeshFilterInterface::Normal;
-    case fcvt_plugin::FilterKind::MeasureAndVertexColouring:
-    default: return FilterClass(MeshFilterInterface::Measure | MeshFilterInterface::VertexColoring);
-    }
+    return fcvt_plugin::glue::filterClass<MeshFilterInterface>(filterId(ID(a)));
 }
 
 MeshFilterInterface::FILTER_ARITY FilterFcvtPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
@@ -107,31 +91,16 @@ void FilterFcvtPlugin::initParameterSet(QAction* a, MeshDocument& md, RichParame
 
 bool FilterFcvtPlugin::applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb)
 {
-    // Nothing may escape into MeshLab: the GUI catches only std::bad_alloc and meshlabserver
-    // nothing at all, so an exception would terminate the application.
     FilterFcvtPluginLog log([this](bool warning, const std::string& text) {
         if (warning)
             Log(GLLogStream::WARNING, text);
         else
             Log(text);
     });
-    try {
-        const Values values(par);
-        fcvt_plugin::applyFilter(filterId(ID(a)), md, values, log, cb);
-        return true;
-    } catch (const fcvt_plugin::FilterFailure& e) {
-        return fail(e.message());
-    } catch (const std::exception& e) {
-        return fail(fcvt_plugin::unexpectedFailure(&e));
-    } catch (...) {
-        return fail(fcvt_plugin::unexpectedFailure(nullptr));
-    }
-}
-
-bool FilterFcvtPlugin::fail(const QString& message)
-{
-    errorMessage = fcvt_plugin::plainLogText(message);
-    Log(GLLogStream::WARNING, errorMessage.toStdString());
+    const Values values(par);
+    QString failure;
+    if (fcvt_plugin::runFilter(filterId(ID(a)), md, values, log, cb, failure)) return true;
+    errorMessage = failure;  // logged too: meshlabserver 2020.09 prints the log but never errorMsg()
     return false;
 }
 

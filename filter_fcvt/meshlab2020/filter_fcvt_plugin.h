@@ -26,8 +26,4 @@ public:
     void initParameterSet(QAction* a, MeshModel& m, RichParameterList& par) override;
     void initParameterSet(QAction* a, MeshDocument& md, RichParameterList& par) override;
     bool applyFilter(QAction* a, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb) override;
-
-private:
-    //! Fails the filter: sets errorMessage and also logs it.
-    bool fail(const QString& message);
 };

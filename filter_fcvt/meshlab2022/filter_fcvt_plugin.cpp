@@ -1,9 +1,6 @@
 #include "filter_fcvt_plugin.h"
 
-#include <exception>
-
-#include "../fcvt_filters.h"
-#include "../log_text.h"
+#include "../plugin_glue.h"
 
 namespace {
 
@@ -15,7 +12,7 @@ using AbsoluteOrPercentParameter = RichPercentage;
 using AbsoluteOrPercentParameter = RichAbsPerc;
 #endif
 
-fcvt_plugin::FilterId filterId(int id) { return static_cast<fcvt_plugin::FilterId>(id); }
+using fcvt_plugin::glue::filterId;
 
 // The neutral parameter definitions as MeshLab 2022.02's (and later) Rich* parameters.
 RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& defs, const MeshDocument* md,
@@ -42,20 +39,13 @@ RichParameterList toRichParameters(const std::vector<fcvt_plugin::ParamDef>& def
     return list;
 }
 
-class Values : public fcvt_plugin::ParamValues {
+// A mesh parameter holds the layer's id in the document.
+class Values : public fcvt_plugin::glue::RichValues<RichParameterList> {
 public:
-    Values(const RichParameterList& par, MeshDocument& md) : par_(par), md_(md) {}
-    bool hasParameter(const char* name) const override { return par_.hasParameter(name); }
-    bool isBool(const char* name) const override { return par_.getParameterByName(name).value().isBool(); }
-    int getInt(const char* name) const override { return par_.getInt(name); }
-    double getFloat(const char* name) const override { return fcvt_plugin::typedValue(par_.getFloat(name)); }
-    bool getBool(const char* name) const override { return par_.getBool(name); }
-    int getEnum(const char* name) const override { return par_.getEnum(name); }
-    double getAbsPerc(const char* name) const override { return fcvt_plugin::typedValue(par_.getAbsPerc(name)); }
+    Values(const RichParameterList& par, MeshDocument& md) : RichValues(par), md_(md) {}
     MeshModel* getMesh(const char* name) const override { return md_.getMesh(par_.getMeshId(name)); }
 
 private:
-    const RichParameterList& par_;
     MeshDocument& md_;
 };
 
@@ -85,12 +75,7 @@ QString FilterFcvtPlugin::filterInfo(ActionIDType filter) const { return fcvt_pl
 
 FilterPlugin::FilterClass FilterFcvtPlugin::getClass(const QAction* a) const
 {
-    switch (fcvt_plugin::filterKind(filterId(ID(a)))) {
-    case fcvt_plugin::FilterKind::Remeshing: return FilterPlugin::Remeshing;
-    case fcvt_plugin::FilterKind::Normal: return FilterPlugin::Normal;
-    case fcvt_plugin::FilterKind::MeasureAndVertexColouring:
-    default: return FilterClass(FilterPlugin::Measure | FilterPlugin::VertexColoring);
-    }
+    return fcvt_plugin::glue::filterClass<FilterPlugin>(filterId(ID(a)));
 }
 
 FilterPlugin::FilterArity FilterFcvtPlugin::filterArity(const QAction*) const { return SINGLE_MESH; }
@@ -118,20 +103,9 @@ std::map<std::string, QVariant> FilterFcvtPlugin::applyFilter(const QAction* a, 
     // text, pymeshlab raises it); anything else would end the application. The message also goes
     // to the log, as in the 2020.09 plugin.
     Log log(*this);
+    const Values values(par, md);
     QString failure;
-    try {
-        Values values(par, md);
-        fcvt_plugin::applyFilter(filterId(ID(a)), md, values, log, cb);
-        return {};
-    } catch (const fcvt_plugin::FilterFailure& e) {
-        failure = e.message();
-    } catch (const std::exception& e) {
-        failure = fcvt_plugin::unexpectedFailure(&e);
-    } catch (...) {
-        failure = fcvt_plugin::unexpectedFailure(nullptr);
-    }
-    failure = fcvt_plugin::plainLogText(failure);
-    log.warning(failure);
+    if (fcvt_plugin::runFilter(filterId(ID(a)), md, values, log, cb, failure)) return {};
     throw MLException(failure);
 }
 
