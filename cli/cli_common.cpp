@@ -146,4 +146,17 @@ const std::vector<std::string>& fileArguments(const Arguments& a, size_t count, 
     return a.positional();
 }
 
+InputOutput inputAndOutput(const Arguments& a, const std::string& command)
+{
+    const std::vector<std::string>& files = fileArguments(a, 2, command, "an input and an output file");
+    return {files[0], files[1]};
+}
+
+bool printedHelp(const Arguments& a, void (*printUsage)())
+{
+    if (!a.flag("help")) return false;
+    printUsage();
+    return true;
+}
+
 }  // namespace fieldcvt::cli

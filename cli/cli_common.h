@@ -48,9 +48,18 @@ const std::vector<Vec3>& userField(const std::string& path, const VertexAttribut
 
 double secondsSince(std::chrono::steady_clock::time_point start);
 
+//! --help (or -h) given: prints the command's usage and returns true (the command then returns 0).
+bool printedHelp(const Arguments& a, void (*printUsage)());
+
 //! The command's file arguments, which must be exactly `count` (described as `what`, e.g. "an
 //! input and an output file"); otherwise a UsageError naming the command's --help.
 const std::vector<std::string>& fileArguments(const Arguments& a, size_t count, const std::string& command,
                                               const std::string& what);
+
+//! The file arguments of a command that takes an input and an output file (fileArguments).
+struct InputOutput {
+    std::string in, out;
+};
+InputOutput inputAndOutput(const Arguments& a, const std::string& command);
 
 }  // namespace fieldcvt::cli

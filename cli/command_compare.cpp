@@ -189,10 +189,7 @@ int runCompare(const std::vector<std::string>& args)
 {
     const Arguments a(args, {"vertices", "seed", "lambda", "field", "threads", "meshlabserver", "meshlab-iterations", "save"},
                       {"json", "quiet", "help", "no-meshlab", "no-valence"});
-    if (a.flag("help")) {
-        printUsage();
-        return 0;
-    }
+    if (printedHelp(a, printUsage)) return 0;
     const std::string& inPath = fileArguments(a, 1, "compare", "exactly one input file")[0];
     if (!a.has("vertices")) throw UsageError("compare needs --vertices N (the target vertex count)");
     RemeshParams fcvt;

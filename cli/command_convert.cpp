@@ -70,13 +70,8 @@ std::string surfaceSummary(const std::string& inPath, const TriMesh& input, cons
 int runConvert(const std::vector<std::string>& args)
 {
     const Arguments a(args, {}, {"quiet", "help", "strict", "overwrite"});
-    if (a.flag("help")) {
-        printUsage();
-        return 0;
-    }
-    const std::vector<std::string>& files = fileArguments(a, 2, "convert", "an input and an output file");
-    const std::string& inPath = files[0];
-    const std::string& outPath = files[1];
+    if (printedHelp(a, printUsage)) return 0;
+    const auto [inPath, outPath] = inputAndOutput(a, "convert");
     const bool quiet = a.flag("quiet");
     checkOutputPath(outPath, inPath);
 

@@ -46,13 +46,8 @@ void printUsage()
 int runField(const std::vector<std::string>& args)
 {
     const Arguments a(args, {"field", "seed"}, {"quiet", "help"});
-    if (a.flag("help")) {
-        printUsage();
-        return 0;
-    }
-    const std::vector<std::string>& files = fileArguments(a, 2, "field", "an input and an output file");
-    const std::string& inPath = files[0];
-    const std::string& outPath = files[1];
+    if (printedHelp(a, printUsage)) return 0;
+    const auto [inPath, outPath] = inputAndOutput(a, "field");
     FieldParams params;
     params.source = fieldOption(a, params.source, true);
     params.seed = a.unsignedInteger("seed", params.seed);

@@ -73,10 +73,7 @@ void printTable(const std::string& path, const TriMesh& mesh, const nlohmann::or
 int runMetrics(const std::vector<std::string>& args)
 {
     const Arguments a(args, {"ref"}, {"json", "help"});
-    if (a.flag("help")) {
-        printUsage();
-        return 0;
-    }
+    if (printedHelp(a, printUsage)) return 0;
     const std::string& path = fileArguments(a, 1, "metrics", "exactly one mesh file")[0];
     const TriMesh mesh = readMesh(path);
     QualityMetrics quality = computeQuality(mesh);

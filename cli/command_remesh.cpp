@@ -347,13 +347,8 @@ int runRemesh(const std::vector<std::string>& args)
                        "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region", "texture"},
                       {"quiet", "help", "no-valence", "no-repair", "keep-holes", "exact-count", "full-surface", "random-start",
                        "no-texture", "overwrite"});
-    if (a.flag("help")) {
-        printUsage();
-        return 0;
-    }
-    const std::vector<std::string>& files = fileArguments(a, 2, "remesh", "an input and an output file");
-    const std::string& inPath = files[0];
-    const std::string& outPath = files[1];
+    if (printedHelp(a, printUsage)) return 0;
+    const auto [inPath, outPath] = inputAndOutput(a, "remesh");
     RemeshParams params = paramsFrom(a);
     // Checked before reading the input (a usage error); applied once the area is known.
     const double targetLength = a.number("target-length", 0.0, 0.0, Arguments::Bound::Exclusive);

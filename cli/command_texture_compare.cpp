@@ -84,10 +84,7 @@ void paste(TextureImage& sheet, const TextureRender& render, int column, int row
 int runTextureCompare(const std::vector<std::string>& args)
 {
     const Arguments a(args, {"size", "views", "pictures"}, {"json", "help"});
-    if (a.flag("help")) {
-        printUsage();
-        return 0;
-    }
+    if (printedHelp(a, printUsage)) return 0;
     const std::vector<std::string>& files = fileArguments(a, 2, "texture-compare", "INPUT and OUTPUT");
     const int size = static_cast<int>(a.integer("size", 512, 16, 4096));
     const int views = static_cast<int>(a.integer("views", 6, 1, 36));

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <utility>
 
 namespace fieldcvt::cli {
 
@@ -18,19 +19,12 @@ nlohmann::ordered_json numberOrNull(double x)
 
 nlohmann::ordered_json metricsJson(const QualityMetrics& m)
 {
+    const std::pair<const char*, double> figures[] = {
+        {"q_min", m.qMin},         {"q_avg", m.qAvg},       {"theta_min", m.thetaMin},   {"theta_min_avg", m.thetaMinAvg},
+        {"theta_max", m.thetaMax}, {"pct_lt30", m.pctLt30}, {"pct_gt90", m.pctGt90},     {"v6_pct", m.v6Pct},
+        {"d_rms", m.dRms},         {"d_h", m.dH},           {"d_boundary", m.dBoundary}, {"boundary_v4_pct", m.boundaryV4Pct}};
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
-    j["q_min"] = numberOrNull(m.qMin);
-    j["q_avg"] = numberOrNull(m.qAvg);
-    j["theta_min"] = numberOrNull(m.thetaMin);
-    j["theta_min_avg"] = numberOrNull(m.thetaMinAvg);
-    j["theta_max"] = numberOrNull(m.thetaMax);
-    j["pct_lt30"] = numberOrNull(m.pctLt30);
-    j["pct_gt90"] = numberOrNull(m.pctGt90);
-    j["v6_pct"] = numberOrNull(m.v6Pct);
-    j["d_rms"] = numberOrNull(m.dRms);
-    j["d_h"] = numberOrNull(m.dH);
-    j["d_boundary"] = numberOrNull(m.dBoundary);
-    j["boundary_v4_pct"] = numberOrNull(m.boundaryV4Pct);
+    for (const auto& [name, value] : figures) j[name] = numberOrNull(value);
     return j;
 }
 
