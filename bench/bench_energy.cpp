@@ -30,6 +30,25 @@ using namespace fieldcvt;
 
 namespace {
 
+//! Scales `surface` to the working scale of `samples` samples (mean cell area 1) and returns that
+//! many samples on it after 5 Lloyd steps, as L-BFGS starts from them.
+std::vector<Vec3> relaxedSamples(TriMesh& surface, int samples)
+{
+    const double scale = std::sqrt(samples / surfaceArea(surface));
+    for (Vec3& p : surface.vertices) p *= scale;
+    std::vector<Vec3> seeds = sampleSurfaceUniform(surface, samples, 1);
+    EnergyFunction energy(surface);
+    lloydRelaxation(energy, surface, seeds, 5, 1);
+    return seeds;
+}
+
+//! Energy + gradient evaluations of `energy` at `seeds`, timed.
+void timeEvaluations(benchmark::State& state, EnergyFunction& energy, const std::vector<Vec3>& seeds)
+{
+    Eigen::VectorXd x = flatten(seeds), gradient;
+    for (auto _ : state) benchmark::DoNotOptimize(energy.evaluate(x, gradient).total);
+}
+
 // bunny.obj at the working scale (mean cell area 1) with Lloyd-relaxed samples, as during L-BFGS.
 struct BunnySetup {
     TriMesh surface;
@@ -38,11 +57,7 @@ struct BunnySetup {
     {
         InputReport report;
         surface = prepareInput(readMesh(std::string(FCVT_RESOURCES_DIR) + "/bunny.obj"), report);
-        const double scale = std::sqrt(samples / surfaceArea(surface));
-        for (Vec3& p : surface.vertices) p *= scale;
-        seeds = sampleSurfaceUniform(surface, samples, 1);
-        EnergyFunction energy(surface);
-        lloydRelaxation(energy, surface, seeds, 5, 1);
+        seeds = relaxedSamples(surface, samples);
     }
 };
 
@@ -57,8 +72,7 @@ void BM_EnergyEvaluationBunny5000(benchmark::State& state)
     const BunnySetup& setup = bunny5000();
     omp_set_num_threads(static_cast<int>(state.range(0)));
     EnergyFunction energy(setup.surface);
-    Eigen::VectorXd x = flatten(setup.seeds), gradient;
-    for (auto _ : state) benchmark::DoNotOptimize(energy.evaluate(x, gradient).total);
+    timeEvaluations(state, energy, setup.seeds);
     state.counters["clipped_polygons"] = static_cast<double>(energy.lastDiagram().clippedPolygons);
 }
 BENCHMARK(BM_EnergyEvaluationBunny5000)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -165,12 +179,7 @@ struct DenseSetup {
     {
         InputReport report;
         surface = subdivide(prepareInput(readMesh(std::string(FCVT_RESOURCES_DIR) + "/bunny.obj"), report));
-        const int samples = surface.faceCount() / 16;
-        const double scale = std::sqrt(samples / surfaceArea(surface));
-        for (Vec3& p : surface.vertices) p *= scale;
-        seeds = sampleSurfaceUniform(surface, samples, 1);
-        EnergyFunction energy(surface);
-        lloydRelaxation(energy, surface, seeds, 5, 1);
+        seeds = relaxedSamples(surface, surface.faceCount() / 16);
         field = computeField(surface, FieldParams{});
     }
 };
@@ -191,8 +200,7 @@ void BM_CvtEvaluationDense(benchmark::State& state)
     const DenseSetup& setup = dense();
     omp_set_num_threads(static_cast<int>(state.range(0)));
     EnergyFunction energy(setup.surface);
-    Eigen::VectorXd x = flatten(setup.seeds), gradient;
-    for (auto _ : state) benchmark::DoNotOptimize(energy.evaluate(x, gradient).total);
+    timeEvaluations(state, energy, setup.seeds);
     state.counters["faces"] = setup.surface.faceCount();
     state.counters["samples"] = static_cast<double>(setup.seeds.size());
 }

@@ -12,6 +12,24 @@ namespace {
 
 using namespace fieldcvt;
 
+//! Triangulates the polygon `corners` of `points` once per iteration (N = state.range(0), the
+//! corner count, for the complexity fit).
+void timeTriangulation(benchmark::State& state, const std::vector<Vec3>& points, const std::vector<int>& corners)
+{
+    std::vector<Face> faces;
+    for (auto _ : state) {
+        faces.clear();
+        benchmark::DoNotOptimize(triangulatePolygon(points, corners, faces));
+    }
+    state.SetComplexityN(state.range(0));
+}
+
+//! 1000, 10 000 and 100 000 corners, fitted to N log N.
+void largePolygons(benchmark::internal::Benchmark* b)
+{
+    b->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oNLogN);
+}
+
 void BM_TriangulateLobedPolygon(benchmark::State& state)
 {
     const int n = static_cast<int>(state.range(0));
@@ -22,19 +40,9 @@ void BM_TriangulateLobedPolygon(benchmark::State& state)
         points.push_back({r * std::cos(a), r * std::sin(a), 0});
         corners.push_back(i);
     }
-    std::vector<Face> faces;
-    for (auto _ : state) {
-        faces.clear();
-        benchmark::DoNotOptimize(triangulatePolygon(points, corners, faces));
-    }
-    state.SetComplexityN(n);
+    timeTriangulation(state, points, corners);
 }
-BENCHMARK(BM_TriangulateLobedPolygon)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Arg(100000)
-    ->Unit(benchmark::kMicrosecond)
-    ->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_TriangulateLobedPolygon)->Apply(largePolygons);
 // A strip wound 10 times (two arms of N / 2 corners, 1 apart, 0.5 wide): long thin channels,
 // the case ear clipping is slowest on and where a sweep's monotone pieces are many.
 void BM_TriangulateSpiralPolygon(benchmark::State& state)
@@ -49,19 +57,9 @@ void BM_TriangulateSpiralPolygon(benchmark::State& state)
         }
     std::vector<int> corners(points.size());
     for (std::size_t i = 0; i < corners.size(); ++i) corners[i] = static_cast<int>(i);
-    std::vector<Face> faces;
-    for (auto _ : state) {
-        faces.clear();
-        benchmark::DoNotOptimize(triangulatePolygon(points, corners, faces));
-    }
-    state.SetComplexityN(state.range(0));
+    timeTriangulation(state, points, corners);
 }
-BENCHMARK(BM_TriangulateSpiralPolygon)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Arg(100000)
-    ->Unit(benchmark::kMicrosecond)
-    ->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_TriangulateSpiralPolygon)->Apply(largePolygons);
 // Small polygons (quads, hexagons: most polygon faces of files) on both sides of the threshold.
 BENCHMARK(BM_TriangulateLobedPolygon)
     ->Name("BM_TriangulateSmallPolygon")
