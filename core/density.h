@@ -1,5 +1,5 @@
 #pragma once
-// Adaptive sizing (issue 5, item 5): a vertex density μ > 0 per surface vertex and the CVT
+// Adaptive sizing: a vertex density μ > 0 per surface vertex and the CVT
 // density ρ of eq. 1 derived from it.
 //
 // Semantics. μ is a *vertex density*: the number of output vertices per unit area is ∝ μ, so

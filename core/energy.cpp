@@ -178,10 +178,8 @@ FieldFrames EnergyFunction::framesAt(const std::vector<Vec3>& points, std::vecto
         // sample moves little between evaluations: a few faces at most); the tree only where
         // the walk does not settle (no hint, or a sample that jumped). The walk's answer is the
         // closest point except where another sheet of the surface comes nearer, where the
-        // sample's own sheet is the one its cell lies on. Measured (bunny 5000, 2 threads):
-        // the FCVT stage 0.49 -> 0.42 s; over seeds 1-4 on the nine rows the same figures on
-        // torus, cylinder and fertility 3000 (the walks end on the tree's faces), elsewhere
-        // within the seeds' spread.
+        // sample's own sheet is the one its cell lies on. Faster than the tree alone, with the
+        // same figures (docs/tuning.md, "Frames by a walk from the hint").
         const ClosestPoint cp = closestOnOwnSheet(points[i], *tree_, faces[i]);
         faces[i] = cp.face;
         const FieldSample s = interpolateField(surface_, *field_, cp.face, cp.barycentric);

@@ -97,8 +97,8 @@ public:
     const RvdResult& lastDiagram() const { return rvd_; }
     //! Frees the last diagram (lastDiagram() is empty afterwards) and the diagram's work space:
     //! once the mesh is extracted neither is needed, and the extraction's cell pieces and their
-    //! links were the largest memory of a run (205 MB of 840 at 100 000 vertices on nefertiti
-    //! subdivided twice). A later evaluation allocates them again.
+    //! links were the largest memory of a run (docs/tuning.md, "Memory of the diagram"). A later
+    //! evaluation allocates them again.
     void releaseDiagram()
     {
         rvd_ = RvdResult{};

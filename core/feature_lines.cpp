@@ -77,13 +77,11 @@ FeatureLines detectFeatures(const TriMesh& surface, double angleDegrees, const s
         lines.segments.push_back({surface.vertices[size_t(a)], surface.vertices[size_t(b)]});
     }
     // A line ends (1), branches (>= 3), runs into the open border or turns sharply: those
-    // points must be output vertices, so a sample sits on each. (A sample free to slide past a
-    // sharp turn would cut it: fandisk's two creases that meet at 25° lost 0.45 % of the
-    // diagonal there.) The open border's own sharp turns are corners too (camelhead's coarse
-    // neck cut turns by up to 90°).
+    // points must be output vertices, so a sample sits on each: a sample free to slide past a
+    // sharp turn would cut it. The open border's own sharp turns are corners too.
     // Corners closer than `cornerSpacing` to a more important one are dropped: two fixed
-    // samples closer than a cell make a sliver (a jagged hole outline on the bunny gave 3°
-    // angles). Line ends and branches come first, then the sharper turns.
+    // samples closer than a cell make a sliver. Line ends and branches come first, then the
+    // sharper turns. (The cases behind these rules: docs/tuning.md, "Feature corners".)
     const std::vector<double> lineTurns = turnAngles(surface, lines.edges);
     const std::vector<double> borderTurns = turnAngles(surface, borderEdges);
     std::vector<std::pair<double, int>> candidates;  // (importance, vertex)
@@ -237,15 +235,11 @@ std::vector<SampleConstraint> relaxConstrainedSamples(EnergyFunction& energy, st
     options.boundary = !border.empty();
     // Without feature lines the free samples stay where the CVT iterations left them (the FCVT
     // iterations move them next), and only the faces along the border are clipped, which is
-    // all the border's 1D cells need: 10 RVDs of the border faces instead of the whole surface
-    // (bunny 5000: this stage 0.090 -> 0.034 s). Measured over seeds 1-4 on the open rows
-    // (camelhead 3000, mask 4000, bunny 5000; cylinder 1000 the same figures): Q_avg within
-    // 0.0004 of moving them, V6 as high or higher (mask's lowest 97.5 -> 97.6 %), d_H's largest
-    // 1.45 / 0.37 / 0.72 -> 1.50 / 0.37 / 0.62 %. With feature lines they still move to their
-    // centroids, filling in behind the samples pulled onto the lines.
+    // all the border's 1D cells need: 10 RVDs of the border faces instead of the whole surface,
+    // faster for the same figures (docs/tuning.md, "Border stage: free samples"). With feature
+    // lines they still move to their centroids, filling in behind the samples pulled onto the lines.
     // When nothing follows (no FCVT iterations: a pure CVT run), the free samples move here as
-    // before, or the ones next to the border would keep the gaps the border samples left
-    // (bunny 5000, λ = 0 and 130 CVT iterations: d_H 0.61 % staying, within 0.6 % moving).
+    // before, or the ones next to the border would keep the gaps the border samples left.
     const bool moveFree = !features.segments.empty() || !iterationsFollow;
     options.borderFacesOnly = !moveFree;
     constexpr size_t kCandidates = 16;

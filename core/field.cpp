@@ -173,9 +173,8 @@ DirectionField computeField(const TriMesh& mesh, const FieldParams& params, Fiel
         // off the rim direction mod 60°, and the field twists in between); the intrinsic energy
         // lets the border's direction propagate (FieldSmoothness).
         // Auto: only where the border is long for the surface (at least twice the root of its
-        // area: the cylinder 2.2, mask 2.9), so that it decides the field. Short borders (the
-        // bunny's holes 1.4, camelhead's neck 1.0) keep the extrinsic field, which measured
-        // better there: bunny 5000 d_H 0.66 / 0.71 % (seeds 1, 2) against 0.85 / 0.77 %.
+        // area), so that it decides the field. Short borders keep the extrinsic field, which
+        // measured better there (docs/tuning.md, "kLongBorder").
         const bool longBorder = borderLength > 0 && borderLength >= kLongBorder * std::sqrt(surfaceArea(mesh));
         const bool intrinsic =
             params.smoothness == FieldSmoothness::Intrinsic || (params.smoothness == FieldSmoothness::Auto && longBorder);

@@ -272,10 +272,8 @@ void smoothLevel(const FieldGraph& g, std::vector<Vec3>& d, const std::vector<un
 
     // Threads only where a colour class holds a thousand vertices: every class ends with a
     // barrier, and on a busy machine a barrier can cost a scheduler time slice, so small
-    // levels run faster on one thread. One parallel region for all sweeps of the level.
-    // Measured (2 threads, medians of 5 alternating runs, field stage): nefertiti 10000
-    // 0.173 s with 4096 per class, 0.149 with 1024, 0.146 with 512 or 256; bunny 5000
-    // 0.076 / 0.073 / 0.074 / 0.076.
+    // levels run faster on one thread (docs/tuning.md, "Threads per colour class"). One
+    // parallel region for all sweeps of the level.
     const bool parallel = colours > 0 && n / colours >= 1024;
 #pragma omp parallel if (parallel)
     for (int it = 0; it < iterations; ++it) {

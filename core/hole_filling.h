@@ -1,9 +1,9 @@
 #pragma once
-// Small holes closed before remeshing (issue 32 item 1). A scan's holes of a few input triangles
-// are far below the output's edge length: its cells cannot follow such a border, so the output
-// got slivers around it, torn pieces and lost samples (many_small_holes.ply at 501 vertices: 19
-// of 32 holes kept, 3 pieces, V6 64 %). A hole under about two edge lengths across is closed
-// instead, with triangles over its own border vertices, and the surface remeshed whole.
+// Small holes closed before remeshing. A scan's holes of a few input triangles are far below
+// the output's edge length: its cells cannot follow such a border, so the output got slivers
+// around it, torn pieces and lost samples (docs/tuning.md, "RemeshParams::closeHolesUnder"). A
+// hole under about two edge lengths across is closed instead, with triangles over its own border
+// vertices, and the surface remeshed whole.
 #include "mesh.h"
 
 namespace fieldcvt {

@@ -51,9 +51,8 @@ long long adviseHugePages()
     };
     char line[512];
     while (std::fgets(line, sizeof line, maps)) {
-        // A mapped file's line names it by its path: most lines where libraries are many
-        // (inside MeshLab about 1 000 of 1 100), skipped before the parse (1.1 -> 0.8 ms a
-        // call there; the rest is the kernel writing the text).
+        // A mapped file's line names it by its path: most lines where libraries are many, skipped
+        // before the parse (docs/tuning.md, "Huge pages and free memory").
         if (std::strchr(line, '/') != nullptr) continue;
         std::uintptr_t begin = 0, end = 0;
         char perms[8] = {}, device[16] = {};

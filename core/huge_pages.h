@@ -1,6 +1,6 @@
 #pragma once
 // Transparent huge pages for the run's memory, asked for in-process so that the MeshLab filter
-// gets them as the CLI does (issue 31 item 5). Where the kernel gives huge pages only on request
+// gets them as the CLI does. Where the kernel gives huge pages only on request
 // (Debian's default, THP "madvise"), the hot loops' random reads over the surface, the cells and
 // the neighbour lists miss the TLB far less in 2 MB pages: whole commands 5-10 % faster
 // (docs/measurements.md, "Huge pages in-process"). The output does not depend on it.
@@ -21,16 +21,15 @@ long long adviseHugePages();
 //! adviseHugePages(), but only when malloc holds at least 2 MB more memory from the system
 //! (heap, arenas, mapped blocks: mallinfo2) than when it last marked; returns -1 when it
 //! skipped (never where the allocator reports nothing to mallinfo2, e.g. AddressSanitizer's).
-//! Reading /proc/self/maps costs 0.1 ms in the CLI and 0.4-0.8 ms inside MeshLab (its
-//! 1 100 mappings of libraries and plugins), paid before each stage: 1-3 % of the filter's time
-//! (bench/filter_vs_cli.py).
+//! Reading /proc/self/maps costs up to a millisecond inside MeshLab, paid before each stage
+//! (docs/tuning.md, "Huge pages and free memory").
 long long adviseNewHugePages();
 
 //! Gives the free memory inside malloc's heap back to the system when it holds at least `atLeast`
 //! bytes free below its top (the room kept at the top stays: HugePageHeap's pad, marked) (glibc's mallinfo2 and malloc_trim; nothing elsewhere): blocks under the 32 MiB
 //! mapping threshold (HugePageHeap) that a stage freed would otherwise stay resident while the
-//! next stages allocate more (nefertiti subdivided twice to 100 000 vertices: peak resident
-//! memory 886 MB before, 600 MB with this and EnergyFunction::releaseDiagram). remesh() calls it before each stage. Returns whether it trimmed.
+//! next stages allocate more (docs/tuning.md, "Memory of the diagram"). remesh() calls it before
+//! each stage. Returns whether it trimmed.
 bool releaseFreeMemory(std::size_t atLeast = std::size_t(32) << 20);
 
 //! While alive, malloc keeps room to grow: the heap grows by at least 64 MiB at a time

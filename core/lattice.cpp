@@ -74,9 +74,9 @@ void smoothPositions(const FieldGraph& g, const LevelFrames& f, std::vector<Vec3
 {
     const int n = g.vertexCount();
     const int colours = static_cast<int>(g.colourOffsets.size()) - 1;
-    // Threads from 256 vertices per colour class on (the field solver waits for 4096, because
-    // every class ends with a barrier): bunny 5000's finest level (10 108 vertices, 6 classes)
-    // solves in 35 ms on 2 threads against 49 ms on one; 1024 per class gave 40 ms.
+    // Threads from 256 vertices per colour class on (the field solver waits for 1024, because
+    // every class ends with a barrier): faster on the finest levels (docs/tuning.md, "Threads
+    // per colour class").
     const bool parallel = colours > 0 && n / colours >= 256;
     // The running weighted mean of Jakob et al.'s update: each neighbour j moves i's lattice by
     // the offset between the two lattices' points nearest to the edge's middle point (where

@@ -31,8 +31,7 @@ int EdgeTable::firstHalfEdgeFrom(const std::vector<Face>& faces, int e, int orig
 namespace {
 
 //! Half-edges from which the buckets are sorted and filled on threads (the counting pass stays
-//! serial): `fcvt_bench --benchmark_filter=EdgeTable`, medians of 5, 1 -> 2 threads: bunny.obj
-//! (208 000 half-edges) 2.74 -> 2.32 ms, subdivided once (833 000) 8.83 -> 6.95 ms.
+//! serial; docs/tuning.md, "kMinEntriesForThreads").
 constexpr size_t kMinEntriesForThreads = 200000;
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// Per-corner texture coordinates and materials next to a TriMesh (issue 36): what the OBJ and PLY
+// Per-corner texture coordinates and materials next to a TriMesh: what the OBJ and PLY
 // readers keep, the texture transfer (texture_transfer.h) computes and the writers write.
 #include "mesh.h"
 

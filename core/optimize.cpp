@@ -102,8 +102,8 @@ struct TrackedObjective {
     }
 };
 
-// A restart segment that lowers E_tot by less than this fraction makes no progress
-// (fandisk 1251 crept by ~3e-8 per iteration).
+// A restart segment that lowers E_tot by less than this fraction makes no progress (docs/tuning.md,
+// "kStallDecrease").
 constexpr double kStallDecrease = 1e-6;
 
 }  // namespace
@@ -124,8 +124,8 @@ OptimizeStats minimizeLbfgs(EnergyFunction& energy, std::vector<Vec3>& seeds, co
     solverParams.past = params.relativeDecrease > 0 ? std::max(1, params.window) : 0;
     solverParams.delta = params.relativeDecrease;
     // A line search that needs more than a few halvings sits at a jump of E_field (an RDT edge
-    // that appears or vanishes between two trial points): it then only creeps, at ~14
-    // evaluations per iteration (fandisk 1251: 497 evaluations instead of 165). It fails
+    // that appears or vanishes between two trial points): it then only creeps, at many
+    // evaluations per iteration (docs/tuning.md, "Line search: at most 10 steps"). It fails
     // instead, and the restart below decides whether L-BFGS still makes progress.
     solverParams.max_linesearch = 10;
 

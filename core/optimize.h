@@ -15,10 +15,8 @@ struct LbfgsParams {
     int memory = 7;        //!< correction pairs kept
     //! Early stop on convergence: L-BFGS ends when E_tot decreased by less than this fraction
     //! over the last `window` iterations, |E_{k-window} - E_k| < relativeDecrease · |E_k|.
-    //! 0 = off (default): the full budget is used, as in the paper's fixed schedule. Measured:
-    //! E_tot still falls by ~2e-4 per 5 iterations after 65 iterations (camelhead 3000,
-    //! nefertiti 100k), and stopping earlier costs regularity: with 3e-4, CVT V6% on
-    //! fertility 3000 drops 86.3 -> 83.8 and Q_avg 0.938 -> 0.931 (1e-3: 81.0, 0.925).
+    //! 0 = off (default): the full budget is used, as in the paper's fixed schedule; stopping
+    //! earlier costs regularity (docs/tuning.md, "LbfgsParams::relativeDecrease").
     double relativeDecrease = 0;
     int window = 5;  //!< iterations the relative decrease is measured over (>= 1)
 };

@@ -1,5 +1,5 @@
 #pragma once
-// Whether a remeshed surface keeps the input's parts (issue 32, item 3): every connected
+// Whether a remeshed surface keeps the input's parts: every connected
 // component of the input that holds a visible share of its area must come back whole, neither
 // lost (some of it far from the output) nor cut into pieces (its area nearest to several output
 // components). A measurement, for `fcvt metrics --ref`, the tests and the benchmarks; the

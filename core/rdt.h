@@ -35,7 +35,7 @@ struct RdtResult {
 //! Drops debris: connected pieces of the output (through edges) of at most `maxFaces` faces
 //! whose every vertex lies within `reach` of the rest of the output. Cells cut by a part
 //! narrower than the edge length leave such crumbs beside the part's own mesh: a part in
-//! pieces for the user (issue 32 item 3), and nothing the rest does not cover within `reach`.
+//! pieces for the user, and nothing the rest does not cover within `reach`.
 //! An isolated small piece (a small part of the input of its own) is kept. Vertices no face
 //! uses any more are removed with their seedOfVertex and faceOfVertex. Returns the pieces dropped
 //! (also added to debrisPieces).

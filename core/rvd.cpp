@@ -125,8 +125,8 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
 
     if (options.triangles && !options.edges) {
         // The extraction's diagram needs no RVD edges: the capacity the optimisation's
-        // evaluations left for them goes before its fragments and links are made (at 400 000
-        // seeds on 800 000 faces about 140 MB, at the run's peak).
+        // evaluations left for them goes before its fragments and links are made, at the run's
+        // peak (docs/tuning.md, "Memory of the diagram").
         for (ChunkOutput& out : m.chunks) std::vector<RvdEdge>().swap(out.edges);
         std::vector<RvdEdge>().swap(m.edgeBuffer);
         std::vector<int>().swap(m.edgeStart);
@@ -173,8 +173,8 @@ void RestrictedVoronoiDiagram::compute(const std::vector<Vec3>& seeds, const Rvd
         result.clippedPolygons += out.clipped;
     }
     // The extraction's diagram (once or a few times a run) needs the chunks' fragments, links
-    // and triangles next; their pieces, summed, go: at 400 000 seeds on 1.6M faces they held
-    // 150 MB at the run's peak. Later evaluations allocate them again.
+    // and triangles next; their pieces, summed, go, at the run's peak (docs/tuning.md, "Memory of
+    // the diagram"). Later evaluations allocate them again.
     if (options.triangles)
         for (ChunkOutput& out : m.chunks) std::vector<CellPiece>().swap(out.pieces);
     if (options.edges) {

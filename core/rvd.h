@@ -94,8 +94,8 @@ public:
     void compute(const std::vector<Vec3>& seeds, const RvdOptions& options, RvdResult& result);
 
     //! Frees the per-chunk outputs and per-thread work space that compute() keeps between calls
-    //! (their capacity is the last diagram's, cell pieces and links included: 180 MB at 100 000
-    //! seeds on 1.6M faces). A later compute() allocates them again.
+    //! (their capacity is the last diagram's, cell pieces and links included: docs/tuning.md,
+    //! "Memory of the diagram"). A later compute() allocates them again.
     void releaseWorkspace();
 
 private:

@@ -63,7 +63,7 @@ inline double RestrictedVoronoiDiagram::Impl::maxSquaredDistance(const Polygon& 
 }
 
 // Always inlined into processTriangle, as when it was defined in the class: in this smaller file
-// GCC's unit-growth limit kept it apart (+1.3 % instructions on fertility 3000, one thread).
+// GCC's unit-growth limit kept it apart, at a cost (docs/tuning.md, "RVD: inlining").
 [[gnu::always_inline]] inline const Polygon& RestrictedVoronoiDiagram::Impl::clipToCell(Polygon& poly, Polygon& spare, int i,
                                                                                         Scratch& scratch, long long& clipped,
                                                                                         const Vec3* faceNormal) const

@@ -141,7 +141,7 @@ struct RestrictedVoronoiDiagram::Impl {
     }
     PointCloud cloud;  // the seeds, for their k-d tree (point_tree.h)
     // The k-d tree of the seeds, built on first use in an evaluation: with the candidate lists
-    // most evaluations need it only for rare fallbacks (0.8 ms of ~15 for bunny 5000).
+    // most evaluations need it only for rare fallbacks (docs/tuning.md, "RVD: the seeds' k-d tree").
     mutable std::unique_ptr<PointTree> tree;
     mutable std::unique_ptr<std::once_flag> treeBuilt;
     const PointTree& seedTree() const
@@ -177,8 +177,7 @@ struct RestrictedVoronoiDiagram::Impl {
     // were found ("movers", at most kMaxMovers, the farthest): every list is checked against them
     // explicitly, so that the drift bound (`drift` of listFromCandidates) is the largest move of
     // the others. One L-BFGS step that sends a handful of seeds far used to invalidate every list
-    // (bunny 5000: a rebuild every 3-4 evaluations, each ~10 ms on one thread, most triggered by
-    // 1-6 seeds).
+    // (docs/tuning.md, "RVD: the seeds' k-d tree").
     std::vector<uint32_t> movers;
     // Per seed: its candidate list (candidateIndex) is, in this evaluation, sorted by distance
     // and complete below this squared distance (every seed nearer is in it); 0 = not known.
@@ -236,8 +235,8 @@ struct RestrictedVoronoiDiagram::Impl {
     // The k-d tree's answer to "the two seeds nearest to p" (the nearest, -1 when the second is
     // as near or the nearest is a duplicate: ties and coincident seeds go the clipping way, which
     // resolves them), by a scan of every seed: the vertices whose lists do not certify their
-    // nearest seed are a few dozen per evaluation (bunny 5000: ~28), and a scan of 5000 seeds
-    // (~8 µs) each costs less than building the tree for them (~1 ms). The squared distances
+    // nearest seed are a few dozen per evaluation, and a scan each costs less than building the
+    // tree for them (docs/tuning.md, "RVD: the seeds' k-d tree"). The squared distances
     // are summed as nanoflann's L2 metric sums them, so the answers are the tree's, bit for bit.
     inline int nearestSeedByScan(const Vec3& p) const;
     // The nearest seed of every vertex, or (borderOnly) of the corners of the faces with a border

@@ -164,7 +164,7 @@ int RestrictedVoronoiDiagram::Impl::buildNeighbourLists()
     {
         // Without the candidate lists every seed asks the k-d tree: one thread builds it while
         // the others start (built on first demand, they would wait for it). With them it is
-        // built on demand only (a failed list, rare: bunny 5000, 26 in 55 evaluations); the
+        // built on demand only (a failed list, rare: docs/tuning.md, "RVD: the seeds' k-d tree"); the
         // vertices' fallbacks scan the seeds instead (nearestSeedByScan).
         if (!useCandidates) {
 #pragma omp single nowait

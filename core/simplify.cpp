@@ -151,12 +151,11 @@ public:
             collapse(c.from, c.to);
             neighbours(c.to, ring);
             for (int w : ring) pushesSinceCompaction += pushEdge(c.to, w);
-            // Each push makes the edge's previous entry stale (bunny 5000: 158 000 of 184 000
-            // pops were stale entries). Dropping them in one linear pass once the pushes since
-            // the last pass reach half the heap costs less than popping them one by one; the
-            // current entries pop in the same order (the order is total on them), so the result
-            // is the same. Bunny 5000's simplification 111 -> 74 ms (medians of 9, one thread;
-            // a pass at a quarter of the heap 91 ms, at the whole heap 82 ms).
+            // Each push makes the edge's previous entry stale (most pops were stale entries).
+            // Dropping them in one linear pass once the pushes since the last pass reach half the
+            // heap costs less than popping them one by one (docs/tuning.md, "Stale heap entries");
+            // the current entries pop in the same order (the order is total on them), so the
+            // result is the same.
             if (2 * pushesSinceCompaction > heap_.size()) {
                 heap_.erase(std::remove_if(heap_.begin(), heap_.end(), [&](const Candidate& e) { return !current(e); }),
                             heap_.end());

@@ -30,7 +30,7 @@ struct SimplifyParams {
     //! many faces (runs of a Morton curve of face centroids), in parallel, each block's frontier
     //! and its neighbours kept, then in one pass over the merged blocks to the target. The blocks
     //! depend on the input only: the same result on any thread count. 0 = one pass always.
-    //! 250 000: nefertiti subdivided twice (1.6M faces) to 400 000 faces in 6 blocks.
+    //! 250 000: a 1.6M-face input in 6 blocks (docs/tuning.md, "SimplifyParams::blockFaces").
     int blockFaces = 250000;
 };
 

@@ -88,8 +88,7 @@ int bakeCellSize(const TriMesh& input, const MeshTexture& inputTexture, const st
     }
     // A cell's two triangles hold about (s - 3)^2 texels. Eight times the input's texels per
     // output face, and cells of at least 16 texels: smaller ones blur the picture where the
-    // margins take most of a triangle (bunny10k_textured at 2000 vertices renders 1.45 times the
-    // half-pixel yardstick with cells of 16 texels, 2.2 times with 8; docs/measurements.md).
+    // margins take most of a triangle (docs/tuning.md, "Baked texture: cells of 16 texels at least").
     const double perFace = output.faces.empty() ? 0.0 : 8.0 * texels / output.faces.size();
     const int wanted = static_cast<int>(std::ceil(std::sqrt(perFace) + 3.0));
     return std::min(std::clamp(wanted, 16, 64), fitting);

@@ -1,5 +1,5 @@
 #pragma once
-// A new texture for the remeshed surface (issue 36): where the input's atlas has charts as small
+// A new texture for the remeshed surface: where the input's atlas has charts as small
 // as the output's faces (e.g. one chart per triangle), keeping it would map most output faces
 // across a seam. Instead each output face gets its own triangle in a new atlas, and each texel
 // the input's colour at its closest point on the input.
@@ -15,9 +15,7 @@ class ClosestPointTree;
 
 //! Above this share of output faces across a seam when the input's atlas is kept
 //! (TextureTransferResult::continuedShare), a new texture is baked by default: the input's charts
-//! are small against the output's faces (on bunny10k_textured at 5 000 vertices, 19 % of the
-//! faces cross a seam and the kept atlas's render differs 2.3 times the half-pixel yardstick,
-//! the baked one 1.7 times; docs/measurements.md).
+//! are small against the output's faces (docs/tuning.md, "kBakeAboveContinuedShare").
 constexpr double kBakeAboveContinuedShare = 0.1;
 
 //! The smallest cell worth baking into, in texels: its triangles' legs are 3 texels long

@@ -1,5 +1,5 @@
 #pragma once
-// A decoded texture image in memory (issue 36): what the renderer samples and the baker reads
+// A decoded texture image in memory: what the renderer samples and the baker reads
 // and fills. Reading and writing image files is the front ends' job (io/image_io.h, QImage).
 #include <Eigen/Core>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The output's texture, decided once for the command line and the MeshLab filter (issue 36):
+// The output's texture, decided once for the command line and the MeshLab filter:
 // the input's atlas kept (texture_transfer.h) or a new image baked (texture_bake.h), chosen per
 // mesh; after a selection-only run the kept faces keep their own coordinates exactly.
 #include "mesh.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Unlit textured renders of a mesh and their comparison (issue 36, item 3): how much a remeshed
+// Unlit textured renders of a mesh and their comparison: how much a remeshed
 // model's texture differs from its input's, seen from the same cameras. A small software
 // rasteriser, so that the figure needs no GPU, no X server and no viewer's version.
 #include "mesh.h"

@@ -1,4 +1,4 @@
-// Keeping the input's atlas on the remeshed surface (issue 36): charts by union-find over the
+// Keeping the input's atlas on the remeshed surface: charts by union-find over the
 // edges that are no seam, closest points through ClosestPointTree, seam faces continued.
 #include "texture_transfer.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Texture coordinates carried from the input onto the remeshed surface, keeping the input's
-// atlas (issue 36): each output face is mapped whole into one chart of the input's atlas, so no
+// atlas: each output face is mapped whole into one chart of the input's atlas, so no
 // face stretches across a seam.
 #include "mesh.h"
 #include "mesh_texture.h"

@@ -1,9 +1,8 @@
 #pragma once
-// How many OpenMP threads a run takes (issue 38): one per core that no other task holds. Idle
-// OpenMP threads spin at barriers (libgomp's default); where another task wants the same core,
-// a spinning thread holds it while the thread with work waits for a time slice, at every
-// barrier: beside one busy process, bunny 5000 took 2.7-3.3 s in MeshLab against 1.9 s on a
-// single core's worth of threads. The output does not depend on the thread count.
+// How many OpenMP threads a run takes: one per core that no other task holds. Idle OpenMP
+// threads spin at barriers (libgomp's default); where another task wants the same core, a
+// spinning thread holds it while the thread with work waits for a time slice, at every barrier
+// (docs/tuning.md, "Thread budget"). The output does not depend on the thread count.
 #include <string>
 
 namespace fieldcvt {

@@ -73,8 +73,8 @@ ValenceMesh::ValenceMesh(const TriMesh& mesh, const std::vector<VertexRole>& rol
             vertex[v].role = VertexRole::Boundary;
         } else if (!vertex[v].onBorder && vertex[v].role == VertexRole::Boundary) {
             // A border sample inside the mesh (the RDT covered a hole smaller than its cells):
-            // held on the input's border it kept a sliver at a fixed corner beside it (conrod.stl
-            // at 402 vertices, seed 4: 11.2°), so it moves as an interior vertex.
+            // held on the input's border it kept a sliver at a fixed corner beside it (docs/tuning.md,
+            // "Border samples inside the mesh"), so it moves as an interior vertex.
             vertex[v].role = VertexRole::Free;
         }
     }
