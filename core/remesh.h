@@ -2,16 +2,14 @@
 // The one public entry point of the engine: input mesh + parameters -> remeshed mesh + report.
 // Lengths and positions are in the input's units; "§", "eq." and "Fig." are the FCVT paper's.
 // The measurements behind the defaults: docs/tuning.md, "RemeshParams::<field>".
-#include "field.h"
-#include "lattice.h"
+#include "field_types.h"
 #include "mesh.h"
-#include "metrics.h"
 #include "progress.h"
 #include "remesh_limits.h"
 #include "remesh_result.h"
-#include "repair.h"
-#include "thin_parts.h"
-#include "valence.h"
+#include "repair_params.h"
+#include "thin_part_params.h"
+#include "valence_params.h"
 
 #include <array>
 #include <cstdint>
