@@ -109,14 +109,6 @@ std::string fieldMeshDescription(const RemeshResult& result)
     return "the input (" + std::to_string(faces) + " faces)";
 }
 
-int optimisationFaceTarget(const RemeshParams& params, int sampleCount)
-{
-    constexpr long long kMinFacesPerSample = 2;
-    const long long full = static_cast<long long>(params.optimisationFacesPerSample) * sampleCount;
-    const long long floor = std::min(full, kMinFacesPerSample * sampleCount);
-    return static_cast<int>(std::max(floor, std::min(full, static_cast<long long>(params.optimisationFacesCap))));
-}
-
 RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Progress& progress)
 {
     checkRemeshParams(params);

@@ -97,6 +97,14 @@ void checkOutputPrecision(const TriMesh& mesh, bool inFloat, QualityMetrics& met
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+int optimisationFaceTarget(const RemeshParams& params, int sampleCount)
+{
+    constexpr long long kMinFacesPerSample = 2;
+    const long long full = static_cast<long long>(params.optimisationFacesPerSample) * sampleCount;
+    const long long floor = std::min(full, kMinFacesPerSample * sampleCount);
+    return static_cast<int>(std::max(floor, std::min(full, static_cast<long long>(params.optimisationFacesCap))));
+}
+
 const char* phaseName(Phase phase)
 {
     switch (phase) {

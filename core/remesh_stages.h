@@ -11,7 +11,9 @@
 #include "field.h"
 #include "field_hierarchy.h"
 #include "huge_pages.h"
-#include "remesh.h"
+#include "progress.h"
+#include "remesh_params.h"
+#include "remesh_result.h"
 #include "simplify.h"
 #include "valence.h"
 #include "working_frame.h"
@@ -31,6 +33,11 @@ using Clock = std::chrono::steady_clock;
 inline const double kWorkingEdgeLength = std::sqrt(2.0 / std::sqrt(3.0));
 
 double secondsSince(Clock::time_point start);
+
+//! The optimisation surface's face count for `sampleCount` samples: optimisationFacesPerSample a
+//! sample, at most optimisationFacesCap in all but never fewer than 2 a sample (or the per-sample
+//! count if lower); 0 when optimisationFacesPerSample is 0 (the input itself).
+int optimisationFaceTarget(const RemeshParams& params, int sampleCount);
 
 //! Where the optimisation is, for the progress line, the energy history and the time limit.
 enum class Phase { Sampling, Field, Lloyd, Cvt, Features, Fcvt, Rdt, Valence };

@@ -7,6 +7,7 @@
 #include "mesh_io.h"
 #include "metrics.h"
 #include "remesh.h"
+#include "remesh_stages.h"
 #include "test_meshes.h"
 #include "thread_count.h"
 
