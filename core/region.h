@@ -1,5 +1,5 @@
 #pragma once
-// Remeshing a region (issue 34): the selected faces are remeshed, the rest is kept bit for bit.
+// Remeshing a region: the selected faces are remeshed, the rest is kept bit for bit.
 // Each edge-connected piece of the selection is cut out (extractRegion), remeshed by remesh()
 // with a density that grades from its border's edge lengths to the target (regionDensity), its
 // new border put exactly on the region's own border vertices (pinBorder), and the pieces put

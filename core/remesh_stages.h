@@ -217,7 +217,7 @@ struct ThinPartsOutcome {
     RemeshResult::ThinParts report;
     std::string warning;  //!< set when a later pass was kept: how many vertices it added, and why
 };
-//! Issue 32, item 2: when the first pass's topology (genus, boundary loops, components) differs
+//! Thin parts: when the first pass's topology (genus, boundary loops, components) differs
 //! from the input's, the density is raised where the surface is thinner than the edge length
 //! (thin_parts.h) and the samples are placed, optimised and triangulated again; the pass nearest
 //! the input's topology is kept. Not with RemeshParams::exactCount or initial samples.

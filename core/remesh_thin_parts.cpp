@@ -1,4 +1,5 @@
-// remesh()'s passes for thin parts (remesh_stages.h, remeshThinPartsAgain): issue 32, items 2 and 3.
+// remesh()'s passes for thin parts (remesh_stages.h, remeshThinPartsAgain): more vertices where the
+// surface is thinner than the edge length, until the output's topology is the input's.
 #include "boundary.h"
 #include "closest_point.h"
 #include "metrics.h"
@@ -21,31 +22,26 @@ namespace {
 //! A pass around tears looks for thin parts this many edge lengths from the torn border.
 constexpr double kTearFocusEdges = 2;
 //! Passes after the first: one around the first pass's tears, then two wherever the surface is
-//! thin, each from the best density so far and gentler than the one before: parts under 0.7×
-//! its thickness limit, edges 1/0.7× their thickness (asking more of every thin part everywhere
-//! tore open assets into more pieces). Measured on casting, tray_bottom, adis16480 and a necked
-//! ring over seeds 1-4 (bench/thin_parts.py, docs/measurements.md).
+//! thin, each from the best density so far and asking more of the thin parts than the one before
+//! (docs/tuning.md, "Thin-part passes").
 constexpr int kExtraPasses = 3;
 constexpr double kEdgeShrinkPerPass = 0.7;
-//! A later pass is kept only with at most this many output vertices per vertex asked for (issue
-//! 32 item 2: "at most 2 N").
+//! A later pass is kept only with at most this many output vertices per vertex asked for.
 constexpr double kMaxOutputVertexFactor = 2.0;
 //! A pass over the vertex budget runs once more with its samples scaled to this share of the
 //! budget (the vertex count varies by a percent or two with the samples' places).
 constexpr double kBudgetRetryShare = 0.97;
 //! The passes stop after this many in a row that were not kept (each costs an optimisation).
 constexpr int kMaxPassesInVain = 2;
-//! Issue 32 item 1's bars, which a later pass is held to: no smaller angle (degrees) than this
-//! where the first pass had none,
+//! The triangle bars a later pass is held to: no smaller angle (degrees) than this where the
+//! first pass had none,
 constexpr double kThinPassSmallestAngle = 15;
 //! Nor more triangles with an angle under 30 degrees (%) than the first pass had, or this many.
 constexpr double kThinPassShareUnder30 = 0.5;
 
 //! Side-aware passes run only on closed inputs whose first pass's RDT had at least this many
-//! vertices per sample (cells in several pieces): casting.off at 637 has 1.43, tray_bottom.stl
-//! 1.85, where lato180.ply, adis16480.stl and many_small_holes.ply (1.00-1.03), on which they
-//! never won, would pay a second round of passes for nothing (lato180 at 11 179: 9.4 -> 19 s;
-//! greek_helmet.obj, open, 1.19-1.28: 1.6 -> 2.8 s, never won either).
+//! vertices per sample (cells in several pieces): elsewhere they never won and cost a second
+//! round of passes (docs/tuning.md, "kSideAwareMinPiecesPerSample").
 constexpr double kSideAwareMinPiecesPerSample = 1.1;
 
 //! Where the RDT tore: the vertices of `mesh`'s border edges farther than an edge length from
@@ -60,8 +56,8 @@ std::vector<Vec3> tornBorderPoints(const TriMesh& mesh, const std::vector<Segmen
     return torn;
 }
 
-//! A part of the surface farther than this many edge lengths from the output is lost (issue 32
-//! item 3: every point of a part within 2 edge lengths of the output).
+//! A part of the surface farther than this many edge lengths from the output is lost (every
+//! point of a part is to stay within 2 edge lengths of the output).
 constexpr double kLostEdges = 1.5;
 
 //! What of the surface the output lost: the surface's vertices farther than kLostEdges edge

@@ -1,5 +1,5 @@
 #pragma once
-// Repair of real-world inputs before the remeshing (issue 17): what scanners, surface
+// Repair of real-world inputs before the remeshing: what scanners, surface
 // reconstructions and CAD or game-asset exporters produce and the strict input check
 // (mesh_check.h) refuses or keeps as broken pieces. Every step is counted in RepairReport.
 // Linear in the input: hashes of coordinates, faces and grid cells, one edge table, union-finds.

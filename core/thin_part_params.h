@@ -5,13 +5,11 @@ namespace fieldcvt {
 
 struct ThinPartParams {
     //! The output's edges are at most this times the local thickness where the surface is
-    //! thinner than the uniform edge length divided by it. Chosen by measurement on the CAD parts
-    //! of ../shared/realworld (docs/measurements.md, "thin parts").
+    //! thinner than the uniform edge length divided by it (docs/measurements.md, "thin parts").
     double edgePerThickness = 1.0;
     //! Edges on a strip of surface between two borders (a peninsula of a ragged border, the land
     //! between two holes) at most this times its width: two rows of triangles across, where one
-    //! row of cells would make a chain of cells and no triangle (1 left lato180.ply in 13 pieces
-    //! at 5 589 vertices, 0.5 in 2; docs/measurements.md, "Parts").
+    //! row of cells would make a chain of cells and no triangle (docs/tuning.md, "edgePerStripWidth").
     double edgePerStripWidth = 0.5;
     //! A medial ball counts as spanning a thin part when the two points where it touches the
     //! surface are at least this angle apart, seen from its centre (180° on a flat plate, 90° in

@@ -1,5 +1,5 @@
 #pragma once
-// Thin parts (issue 32, item 2): where the surface is thinner than the output's edge length (a
+// Thin parts: where the surface is thinner than the output's edge length (a
 // plate, a handle, the wall around a narrow hole), the restricted Voronoi cells of samples on one
 // side reach the other side and the RDT tears or glues the shell. This stage measures the
 // surface's local thickness with medial balls and raises the vertex density there, by as much as
