@@ -60,14 +60,6 @@ std::string lastWord(const std::string& line)
     return line.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
 }
 
-//! Whether `file` is there but is no regular file (a FIFO, a device, a directory): never named
-//! by the output, whose readers (MeshLab) would hang on it or fail.
-bool isSpecialFile(const fs::path& file)
-{
-    const std::string problem = sideFileProblem(file.string(), sideFileLimits().imageBytes);
-    return problem.rfind("is a", 0) == 0 && problem.find("limit") == std::string::npos;
-}
-
 //! `text` (a library read from `from`) with the files it names as seen from `to`; a statement
 //! naming a special file is dropped.
 std::string rebasedLibrary(const std::string& text, const fs::path& from, const fs::path& to)
@@ -79,7 +71,7 @@ std::string rebasedLibrary(const std::string& text, const fs::path& from, const 
         const std::string keyword = firstWord(line);
         const std::string file = lastWord(line);
         if (namesFile(keyword) && !file.empty()) {
-            if (isSpecialFile(from / file)) continue;
+            if (isSpecialFile((from / file).string())) continue;
             const std::size_t at = line.rfind(file);
             line = line.substr(0, at) + rebase(file, from, to) + line.substr(at + file.size());
         }

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 namespace fcvt_plugin {
 
@@ -125,21 +124,18 @@ QString storeBakedImage(const MeshModel& input, bool inputKept, const QImage& im
     return {};
 #else
     if (input.fullName().isEmpty()) return "the input layer has no file to write the image beside";
-    const QString stem = QFileInfo(QString::fromStdString(name)).completeBaseName();
-    QString file = QString::fromStdString(name);
-    // Any entry there counts, a dangling link too: the image is written through no link and over
-    // no file, the input's images included.
-    const auto taken = [&](const QString& f) {
-        std::error_code ec;
-        return std::filesystem::exists(std::filesystem::symlink_status((input.pathName() + "/" + f).toStdString(), ec));
-    };
-    for (int i = 2; taken(file); ++i) file = QString("%1_%2.png").arg(stem).arg(i);
-    const QString path = input.pathName() + "/" + file;
     QByteArray png;
     QBuffer buffer(&png);
     if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) return "cannot encode the baked image as PNG";
+    // The names the CLI gives its side files (side_files.h): any entry there counts, a dangling
+    // link too, so the image is written through no link and over no file.
+    QString file;
     try {
-        fieldcvt::writeFileReplacing(path.toStdString(), std::string(png.constData(), size_t(png.size())));
+        fieldcvt::SideFileNames names(false);
+        std::vector<std::string> renamed;
+        const std::string path = names.choose((input.pathName() + "/" + QString::fromStdString(name)).toStdString(), renamed);
+        fieldcvt::writeFileReplacing(path, std::string(png.constData(), size_t(png.size())));
+        file = QFileInfo(QString::fromStdString(path)).fileName();
     } catch (const fieldcvt::Error& e) {
         return QString("cannot write the baked image: ") + e.what();
     }

@@ -95,6 +95,12 @@ std::string sideFileProblem(const std::string& path, std::uintmax_t maxBytes)
     return sizeProblem(std::uintmax_t(status.st_size), maxBytes);
 }
 
+bool isSpecialFile(const std::string& path)
+{
+    struct stat status {};
+    return ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode);
+}
+
 std::string readSideFile(const std::string& path, std::uintmax_t maxBytes)
 {
     // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer, forever.

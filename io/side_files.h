@@ -30,6 +30,10 @@ const SideFileLimits& sideFileLimits();
 //! pipe), not a regular file", "is a directory, not a file", "is 200 MB, over the 16 MB limit".
 std::string sideFileProblem(const std::string& path, std::uintmax_t maxBytes);
 
+//! Whether `path` (links followed) is there but is no regular file: a FIFO, device, socket or
+//! directory, which a reader (MeshLab) would hang on or fail at.
+bool isSpecialFile(const std::string& path);
+
 //! The bytes of the regular file `path`, at most `maxBytes` of them. It is opened without
 //! blocking and checked once open (a FIFO put in its place after a check cannot hang the read).
 //! Throws IOError("<path>: <why>") otherwise.
