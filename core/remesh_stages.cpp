@@ -270,7 +270,7 @@ OptimisationPlan planOptimisation(const OptimisationSurface& surface, const std:
     OptimisationPlan plan;
     // The field is needed when E_field is used (in the FCVT iterations only: measuring it during
     // the CVT iterations would cost a closest-point query per sample and evaluation).
-    plan.useField = p.fcvtIterations > 0 && p.lambda > 0;
+    plan.useField = usesField(p);
     const bool constrained = !surface.border.empty() || !surface.features.empty();
     // The start (RemeshParams::latticeStart). A constant density is the uniform one. Not with
     // feature lines: lattice points near a crease cut creases (docs/tuning.md).
@@ -316,6 +316,15 @@ FieldStage computeFieldStage(const TriMesh& input, const OptimisationSurface& su
     return out;
 }
 
+bool usesField(const RemeshParams& params) { return params.fcvtIterations > 0 && params.lambda > 0; }
+
+ValenceSurface valenceSurface(const PassContext& context)
+{
+    const OptimisationSurface& surface = context.surface;
+    return {surface.mesh(), *context.tree, surface.features.segments, usesField(context.params) ? &context.field.field : nullptr,
+            surface.border};
+}
+
 ValencedMesh optimiseValence(ExtractedMesh extracted, const PassContext& context)
 {
     ValencedMesh out;
@@ -325,11 +334,8 @@ ValencedMesh optimiseValence(ExtractedMesh extracted, const PassContext& context
     pipeline.run("valence", [&] {
         pipeline.enterPhase(Phase::Valence);
         pipeline.report(phaseName(Phase::Valence), 92);
-        const OptimisationSurface& surface = context.surface;
-        const bool useField = context.params.fcvtIterations > 0 && context.params.lambda > 0;
-        const ValenceSurface on{surface.mesh(), *context.tree, surface.features.segments,
-                                useField ? &context.field.field : nullptr, surface.border};
-        out.stats = optimizeValence(out.mesh, extracted.roles, on, context.params.valence, extracted.vertexFaceHints);
+        out.stats = optimizeValence(out.mesh, extracted.roles, valenceSurface(context), context.params.valence,
+                                    extracted.vertexFaceHints);
     });
     return out;
 }

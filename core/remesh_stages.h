@@ -223,6 +223,11 @@ struct ThinPartsOutcome {
 //! the input's topology is kept. Not with RemeshParams::exactCount or initial samples.
 ThinPartsOutcome remeshThinPartsAgain(PassResult first, const PassInput& firstInput, const PassContext& context);
 
+//! Whether the run uses E_field (FCVT iterations with lambda > 0), and so computes the field.
+bool usesField(const RemeshParams& params);
+//! What the valence stage runs on: the optimisation surface, its tree, features, field, border.
+ValenceSurface valenceSurface(const PassContext& context);
+
 //! §4.4 (valence.h): flips, collapses, splits towards valence 6, then a relaxation.
 struct ValencedMesh {
     TriMesh mesh;

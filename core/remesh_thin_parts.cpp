@@ -123,11 +123,7 @@ QualityMetrics shapeAfterValence(const PassContext& context, const ExtractedMesh
     if (!context.params.valenceOptimization) return computeQuality(extracted.mesh);
     TriMesh mesh = extracted.mesh;
     std::vector<VertexRole> roles = extracted.roles;
-    const OptimisationSurface& surface = context.surface;
-    const bool useField = context.params.fcvtIterations > 0 && context.params.lambda > 0;
-    const ValenceSurface on{surface.mesh(), *context.tree, surface.features.segments, useField ? &context.field.field : nullptr,
-                            surface.border};
-    optimizeValence(mesh, roles, on, context.params.valence, extracted.vertexFaceHints);
+    optimizeValence(mesh, roles, valenceSurface(context), context.params.valence, extracted.vertexFaceHints);
     return computeQuality(mesh);
 }
 
