@@ -33,12 +33,11 @@ QString filterInfo(FilterId filter)
 {
     switch (filter) {
     case kRemesh:
-        // Kept to two lines: MeshLab shows it above the parameters, and Qt gives the dialog at
+        // Kept to one line: MeshLab shows it above the parameters, and Qt gives the dialog at
         // most 2/3 of the screen's height (682 pixels at 1280x1024), below which MeshLab 2020.09
-        // clips the last row. What each parameter does is in its tooltip (the Help button).
-        return "Isotropic remeshing into a new layer: a centroidal Voronoi tessellation with edges "
-               "aligned to a 6-RoSy field, then valence optimisation (<b>\"Field-Aligned Isotropic "
-               "Surface Remeshing\"</b>).";
+        // clips the last row (17 rows since exactCount). What each parameter does is in its
+        // tooltip (the Help button).
+        return "<b>Field-Aligned Isotropic Surface Remeshing</b> into a new layer.";
     case kField:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "
                "extrinsically smooth field of Instant Meshes (Jakob et al. 2015), aligned to "

@@ -138,6 +138,15 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                               "where they are and the new faces meet them edge to edge. The target "
                               "vertices or edge length apply to the selected area; the new faces "
                               "are selected on the new layer."));
+        // At the end like every new parameter: the core's exactCount (the CLI's --exact-count).
+        par.addParam(advanced(RichBool(kExactCount, defaults.exactCount, parameterLabel(kExactCount),
+                                       "By default the vertex count yields to the topology: where the "
+                                       "surface is thinner than the edge length the density is raised, "
+                                       "and a shell whose topology the triangulation still loses is "
+                                       "remeshed by local operations on the input, so every shell, hole "
+                                       "and handle is kept; the log says how many vertices were added "
+                                       "and why. Checked: the vertex count asked for is kept and the "
+                                       "topology may be lost (the log warns).")));
         break;
     }
     case kField: {

@@ -105,6 +105,7 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallB
     inputs.featuresFromSelection = boolParam(par, kFeatureSelection, false);
     inputs.colorIrregular = boolParam(par, kColorIrregular, false);
     params.repair = boolParam(par, kRepair, defaults.repair);
+    params.exactCount = boolParam(par, kExactCount, defaults.exactCount);
     inputs.selectedOnly = selectedOnly;
     return remeshFcvt(md, params, inputs, cb);
 }

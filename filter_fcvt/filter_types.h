@@ -42,6 +42,9 @@ constexpr const char* kMaxCrosses = "maxCrosses";
 constexpr int kDefaultMaxCrosses = 2000;
 //! Remeshing: repair the input first (repair.h); off = the strict check only.
 constexpr const char* kRepair = "repair";
+//! Remeshing: keep the vertex count asked for where the topology needs more (RemeshParams::
+//! exactCount, the CLI's --exact-count); default off: the topology is kept.
+constexpr const char* kExactCount = "exactCount";
 //! Remeshing: remesh only the selected faces (region.h), the rest kept; default off.
 constexpr const char* kSelectedOnly = "selectedOnly";
 //! Quality report: the layer d_RMS / d_H are measured against (itself = no distances).

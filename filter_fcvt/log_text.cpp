@@ -43,7 +43,7 @@ constexpr ParameterLabel kParameterLabels[] = {
     {"referenceLayer", "Reference layer (distances)"},
     {"maxCrosses", "Crosses drawn (at most)"},
     {"selectedOnly", "Remesh only selected faces"},
-    {"repair", "Repair the input"},
+    {"exactCount", "Exact vertex count"},
 };
 
 }  // namespace

@@ -53,8 +53,12 @@ if(TARGET fcvt)
   add_test(NAME meshlab_side_files
     COMMAND bash "${_fcvt_ml_dir}/side_files.sh" "${PROJECT_SOURCE_DIR}"
             "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/side_files" "$<TARGET_FILE:fcvt>")
+  # "Exact vertex count" (exactCount) true and false against the CLI's --exact-count and default.
+  add_test(NAME meshlab_exact_count
+    COMMAND bash "${_fcvt_ml_dir}/exact_count.sh" "${PROJECT_SOURCE_DIR}"
+            "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/exact_count" "$<TARGET_FILE:fcvt>")
   set_tests_properties(meshlab_filter_equals_cli meshlab_log_order meshlab_texture_transfer meshlab_side_files
-                       PROPERTIES LABELS meshlab TIMEOUT 600)
+                       meshlab_exact_count PROPERTIES LABELS meshlab TIMEOUT 600)
 endif()
 add_test(NAME meshlab_far_coordinates
   COMMAND bash "${_fcvt_ml_dir}/far_coordinates.sh" "${PROJECT_SOURCE_DIR}"

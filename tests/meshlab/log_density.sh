@@ -7,7 +7,7 @@
 #    the index sum explained; the bunny's boundary figures given; the curvature run's edge lengths
 #    follow the curvature density (tests/cli/check_adaptive.py on the saved layer).
 # B. tests/meshlab/fcvt-remesh-13params.mlx, the script as shipped before issue 15 (13 parameters
-#    in the old order, adaptive a RichBool), plus gradation and repair at its end: it runs, its values are
+#    in the old order, adaptive a RichBool), plus the parameters added since at its end: it runs, its values are
 #    used by name (valenceOptimization false: "off"; 300 vertices), the closed torus gets no
 #    boundary figures and no "n/a"; with adaptive true it asks for the vertex quality (true =
 #    'vertex quality'). Without them meshlabserver 2020.09 aborts on its own assertion
@@ -22,9 +22,10 @@ rm -rf "$work/out"; mkdir -p "$work/out"
 server="$(stage_meshlab "$work/stage" "$plugin")"
 shipped="$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx"
 old="$FCVT_SOURCE_DIR/tests/meshlab/fcvt-remesh-13params.mlx"
-# The parameters added after that script (gradation, repair, selectedOnly): meshlabserver needs every one.
-added_lines="$(grep 'name="gradation"\|name="repair"\|name="selectedOnly"' "$shipped")"
-[ "$(grep -c . <<<"$added_lines")" -eq 3 ] || fail "no gradation, repair and selectedOnly in $shipped"
+# The parameters added after that script (gradation, repair, selectedOnly, exactCount): meshlabserver
+# needs every one.
+added_lines="$(grep 'name="gradation"\|name="repair"\|name="selectedOnly"\|name="exactCount"' "$shipped")"
+[ "$(grep -c . <<<"$added_lines")" -eq 4 ] || fail "no gradation, repair, selectedOnly and exactCount in $shipped"
 
 # filter_body MLX NAME=VALUE...: the <filter> element of MLX with those values.
 filter_body() {
@@ -119,9 +120,8 @@ grep -q "FCVT: 'Field weight (lambda)' (lambda) must be a finite number >= 0, go
   || fail "the lambda error does not name the dialog's label"
 
 # D. Issue 32 through the filter, as through the CLI: the necked ring's neck tears at 150 vertices;
-# vertices are added there (said in the log) and the ring keeps its genus. (The filter has no
-# parameter to keep the count: one more row would not fit 2020.09's dialog on a 1024-pixel
-# screen, meshlab_gui_field_dialog.)
+# vertices are added there (said in the log) and the ring keeps its genus (exactCount off, the
+# default; meshlab_exact_count compares both settings with the CLI's).
 "$FCVT_SOURCE_DIR/tests/meshlab/obj2off.sh" "$FCVT_SOURCE_DIR/resources/necked_ring.obj" "$work/out/necked_ring.off"
 { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
   filter_body "$shipped" vertexCount=150; echo '</FilterScript>'; } > "$work/out/ring.mlx"

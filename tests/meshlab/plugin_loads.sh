@@ -30,7 +30,8 @@ frozen = {  # filter name -> parameter names, in the scripts' order (frozen API)
     "Remeshing: Field-Aligned CVT (FCVT)":
         ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed",
          "sizeMode", "targetLength", "valenceOptimization", "featureAngle", "featureSelection",
-         "adaptive", "colorIrregular", "gradation", "repair", "selectedOnly"],
+         "adaptive", "colorIrregular", "gradation", "repair", "selectedOnly",
+         "exactCount"],
     "Compute 6-RoSy Field": ["fieldSource", "seed", "maxCrosses"],
     "Remeshing Quality Report (FCVT)": ["referenceLayer", "colorIrregular"],
 }
