@@ -91,3 +91,19 @@ add_test(NAME robustness_realworld_distance
           many_small_holes.ply:300 non_manif_hole.ply:500 non_manif_hole.ply:300 tray_bottom.stl:554 tray_bottom.stl:300
           lato180.ply:11179 lato180.ply:5589)
 set_tests_properties(robustness_realworld_distance PROPERTIES LABELS robustness TIMEOUT 900 SKIP_RETURN_CODE 77)
+# Issue 52 ("topology first"): generated inputs at a few hundred vertices (a thin plate with 30
+# narrow holes, 100 small shells, a chair of 6 boxes with thin legs, a frame of thin bars of genus
+# 20; the plate, the chair and the frame also with --feature-angle 45): every shell with its genus
+# and loops, no part merged, lost or split, within 2 edge lengths, well-shaped triangles, the
+# vertices added beyond N warned and counted; --exact-count keeps N.
+add_test(NAME robustness_topology_classes
+  COMMAND Python3::Interpreter "${_fcvt_rob_dir}/check_topology_classes.py" $<TARGET_FILE:fcvt>
+          "${_fcvt_rob_work}/topology_classes")
+set_tests_properties(robustness_topology_classes PROPERTIES LABELS robustness TIMEOUT 300)
+# Issue 52, items 1-2, on all nine real-world meshes at N = max(500, V/4) and max(300, V/8): every
+# part back as one shell with its genus and loops (holes closed by design excepted), none merged.
+add_test(NAME robustness_realworld_topology_all
+  COMMAND Python3::Interpreter "${_fcvt_rob_dir}/check_realworld_topology_all.py" $<TARGET_FILE:fcvt> "${_fcvt_realworld}"
+          "${_fcvt_rob_work}/realworld_topology_all" adis16480.stl casting.off conrod.stl greek_helmet.obj
+          idler_riser.stl lato180.ply many_small_holes.ply non_manif_hole.ply tray_bottom.stl)
+set_tests_properties(robustness_realworld_topology_all PROPERTIES LABELS robustness TIMEOUT 600)

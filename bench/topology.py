@@ -1,0 +1,158 @@
+"""Issue 52 ("topology first"): FCVT beside MMG's mmgs, the peer that keeps topology, on the
+generated topology classes of tests/robustness/topology_classes.py (plate_with_holes,
+small_shells, chair, thin_handle_torus; at the budgets tests/robustness/check_topology_classes.py
+runs them with) and on the nine meshes of resources/realworld at N = max(500, V/4) and
+N = max(300, V/8) (V: the input's vertices as `fcvt metrics` counts them). One markdown row per
+input and N: the input's boundary loops, pieces (connected components) and genus (the sum over
+its pieces; "-" where a piece is non-manifold), then for each tool its output vertices, loops,
+pieces, genus, whether it kept the topology (topology_classes.compare: every part, a component
+with 0.5 % of the area, comes back as one shell with its genus and loops, holes FCVT closes by
+design excepted, no parts merged) and seconds (whole command), and the ratio of FCVT's vertices
+to mmgs's (issue 52's target: at most 0.5 where mmgs keeps the topology).
+
+  python3 bench/topology.py BUILD/cli/fcvt [--threads 2] [--tools fcvt mmgs] [NAME ...]
+
+NAME: a class name or a file of resources/realworld (default: all). mmgs runs as the anchors'
+README says (`/usr/bin/python3 ../shared/anchors/mmgs_remesh.py IN.obj OUT.obj N`) on an OBJ copy
+of the input (written outside the timed part); without ../shared/anchors its cells say
+"skipped: ...". FCVT is timed on a plain run (`--quiet`); a second run writes the report that
+says which holes it closed and which cracks its repair welded (the input compared with both
+tools' outputs is welded alike).
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, ".."))
+sys.path.insert(0, os.path.join(ROOT, "tests", "robustness"))
+sys.path.insert(0, HERE)
+import topology_classes as tc  # noqa: E402
+from check_topology_classes import PLAN  # noqa: E402
+from realworld import stl_to_obj  # noqa: E402
+from side_by_side import SHARED, timed  # noqa: E402
+
+MMGS = os.path.join(SHARED, "anchors", "mmgs_remesh.py")
+REALWORLD = os.path.join(ROOT, "resources", "realworld")
+
+
+def input_vertices(fcvt, path):
+    text = subprocess.run([fcvt, "metrics", path], capture_output=True, text=True, check=True).stdout
+    return next(int(line.split()[1]) for line in text.splitlines() if line.split()[:1] == ["vertices"])
+
+
+def topo(parts):
+    loops, pieces, genus = tc.summary(parts)
+    return f"{loops} / {pieces} / {genus}"
+
+
+def verdict(problems):
+    """"yes", or "no" and what broke, in a few words."""
+    if not problems:
+        return "yes"
+    what = []
+    for word, text in (("lost", "lost"), ("merged", "merged"), ("output shells", "split"), ("output genus", "genus"),
+                       ("boundary loops", "loops")):
+        n = sum(word in p for p in problems)
+        if n:
+            what.append(text if n == 1 else f"{n} {text}")
+    return "no: " + ", ".join(what)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("fcvt")
+    ap.add_argument("names", nargs="*", help="classes and resources/realworld files (default: all)")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--tools", nargs="+", default=["fcvt", "mmgs"], choices=["fcvt", "mmgs"])
+    a = ap.parse_args()
+    realworld = sorted(n for n in os.listdir(REALWORLD) if not n.endswith(".md"))
+    names = a.names or list(tc.CLASSES) + realworld
+    mmgs_missing = None
+    if "mmgs" in a.tools and not os.path.isfile(MMGS):
+        mmgs_missing = f"skipped: {os.path.dirname(MMGS)} absent"
+    print("| input (V; loops, pieces, genus) | N | FCVT V | FCVT loops / pieces / genus | FCVT kept | FCVT s "
+          "| mmgs V | mmgs loops / pieces / genus | mmgs kept | mmgs s | FCVT V / mmgs V |")
+    print("|" + "---|" * 11)
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        for name in names:
+            obj = os.path.join(work, "in.obj")
+            if name in tc.CLASSES:
+                make, ext, _, _ = tc.CLASSES[name]
+                mesh = make()
+                path = tc.write_mesh(os.path.join(work, f"{name}.{ext}"), mesh)
+                tc.write_mesh(obj, mesh)
+                v = len(mesh[0])
+                budgets = PLAN[name][0]
+            else:
+                path = os.path.join(REALWORLD, name)
+                if not os.path.isfile(path):
+                    raise SystemExit(f"{name}: neither a class ({', '.join(tc.CLASSES)}) nor a file of {REALWORLD}")
+                if subprocess.run([a.fcvt, "convert", path, obj, "--quiet"], stderr=subprocess.DEVNULL).returncode != 0:
+                    stl_to_obj(path, obj)
+                mesh = tc.read_mesh(path)
+                v = input_vertices(a.fcvt, path)
+                budgets = [max(500, v // 4), max(300, v // 8)]
+            for n in budgets:
+                out = os.path.join(work, "fcvt.obj")
+                report = os.path.join(work, "fcvt.json")
+                closed, weld = 0, 0.0
+                fcvt_cells = ["failed"] + [""] * 3
+                result = None
+                f_v = m_v = None
+                m_kept = False
+                if "fcvt" in a.tools:
+                    try:
+                        seconds = timed([a.fcvt, "remesh", path, out, "--vertices", str(n), "--threads", str(a.threads),
+                                         "--quiet"])[0]
+                        run = subprocess.run([a.fcvt, "remesh", path, os.path.join(work, "fcvt2.obj"), "--vertices",
+                                              str(n), "--threads", str(a.threads), "--report", report],
+                                             capture_output=True, text=True)
+                        r = json.load(open(report)) if run.returncode == 0 else {}
+                        closed = tc.holes_closed(r, run.stderr)
+                        repair = r.get("repair") or {}
+                        weld = repair.get("weld_distance", 0.0) if repair.get("welded_vertices", 0) > 0 else 0.0
+                        result = tc.compare(mesh, tc.read_mesh(out), closed, weld_distance=weld)
+                        f_v = len({c for t in tc.read_mesh(out)[1] for c in t})
+                        kept = verdict(result["problems"])
+                        fcvt_cells = [str(f_v), topo(result["out_shells"]), kept, f"{seconds:.2f}"]
+                    except (SystemExit, subprocess.CalledProcessError, OSError, ValueError) as e:
+                        fcvt_cells = ["failed: " + (str(e).strip().splitlines() or ["?"])[-1][:60], "", "", ""]
+                prepared = tc.prepared_input(mesh, weld)[0]
+                in_parts = tc.shells(prepared)
+                if mmgs_missing or "mmgs" not in a.tools:
+                    mmgs_cells = [mmgs_missing or "not run", "", "", ""]
+                else:
+                    mout = os.path.join(work, "mmgs.obj")
+                    if os.path.exists(mout):
+                        os.remove(mout)
+                    try:
+                        seconds = timed(["/usr/bin/python3", MMGS, obj, mout, str(n)])[0]
+                        mm = tc.read_mesh(mout)
+                        if not mm[1]:
+                            raise SystemExit("no faces written")
+                        res = tc.compare(mesh, mm, 0, weld_distance=weld)
+                        m_v = len({c for t in mm[1] for c in t})
+                        m_kept = not res["problems"]
+                        kept = verdict(res["problems"])
+                        mmgs_cells = [str(m_v), topo(res["out_shells"]), kept, f"{seconds:.2f}"]
+                    except (SystemExit, subprocess.CalledProcessError, OSError, ValueError) as e:
+                        mmgs_cells = ["failed: " + (str(e).strip().splitlines() or ["?"])[-1][:60], "", "", ""]
+                ratio = f"{f_v / m_v:.2f}" if f_v and m_v else "n/a"
+                rows.append((name, n, result is not None and not result["problems"], m_kept, f_v, m_v))
+                print(f"| {name} ({v}; {topo(in_parts).replace(' / ', ', ')}) | {n} | " + " | ".join(fcvt_cells) + " | "
+                      + " | ".join(mmgs_cells) + f" | {ratio} |", flush=True)
+    both = [r for r in rows if r[3] and r[4] and r[5]]
+    if both:
+        good = [r for r in both if r[2] and r[4] <= 0.5 * r[5]]
+        print(f"\nWhere mmgs keeps the topology ({len(both)} rows): FCVT keeps it with at most half mmgs's vertices "
+              f"on {len(good)}" + ("; not on " + ", ".join(f"{r[0]} {r[1]}" for r in both if r not in good)
+                                   if len(good) < len(both) else ""))
+
+
+if __name__ == "__main__":
+    main()
