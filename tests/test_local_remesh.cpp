@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdio>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -133,6 +134,15 @@ void expectSameTopology(const LocalRemeshResult& result, const TopologySummary& 
     EXPECT_EQ(result.vertexFaceHints.size(), result.mesh.vertices.size());
 }
 
+//! Prints the output's triangle figures (thin parts force small angles: reported, not asserted).
+void printFigures(const LocalRemeshResult& result, const TriMesh& surface)
+{
+    const QualityMetrics quality = computeQuality(result.mesh);
+    std::printf("[ figures  ] %d vertices: theta_min %.2f, %%<30 %.3f, mean edge / target %.3f, V6 %.1f%%, area / input %.4f\n",
+                result.mesh.vertexCount(), quality.thetaMin, quality.pctLt30, meanEdgeLength(result.mesh) / kTarget,
+                quality.v6Pct, surfaceArea(result.mesh) / surfaceArea(surface));
+}
+
 }  // namespace
 
 TEST(LocalRemesh, ThinBarGridKeepsItsTwentyHandles)
@@ -146,6 +156,7 @@ TEST(LocalRemesh, ThinBarGridKeepsItsTwentyHandles)
     EXPECT_GT(result.splits, 0);
     EXPECT_GT(result.collapses, 0);
     EXPECT_LT(largestDistance(result.mesh, surface), 1e-6);
+    printFigures(result, surface);
 }
 
 TEST(LocalRemesh, ThinPlateKeepsItsThirtyNarrowHoles)
@@ -158,6 +169,26 @@ TEST(LocalRemesh, ThinPlateKeepsItsThirtyNarrowHoles)
     EXPECT_LT(largestDistance(result.mesh, surface), 1e-6);
     // The plate's vertices are not all on its rims: its faces were remeshed to the target.
     EXPECT_GT(meanEdgeLength(result.mesh), 0.5 * kTarget);
+    // And it still covers the plate: its rims, sharp edges without feature lines, are not cut
+    // off round after round.
+    EXPECT_GT(surfaceArea(result.mesh), 0.97 * surfaceArea(surface));
+    printFigures(result, surface);
+}
+
+TEST(LocalRemesh, ThinBoxWithoutFeatureLinesKeepsItsRim)
+{
+    const TriMesh surface = scaled(testmesh::thinBox(20, 0.02), 12.0);  // 12 x 0.24 x 12
+    const LocalRemeshResult result = remeshAll(surface);
+    expectSameTopology(result, computeTopology(surface));
+    EXPECT_GT(surfaceArea(result.mesh), 0.97 * surfaceArea(surface));
+    Vec3 lo = result.mesh.vertices[0], hi = lo;
+    for (const Vec3& p : result.mesh.vertices) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    EXPECT_LT(lo.x(), 1e-9);
+    EXPECT_GT(hi.x(), 12 - 1e-9);
+    EXPECT_LT(lo.z(), 1e-9);
+    EXPECT_GT(hi.z(), 12 - 1e-9);
+    EXPECT_NEAR(meanEdgeLength(result.mesh) / kTarget, 1.0, 0.15);
+    printFigures(result, surface);
 }
 
 TEST(LocalRemesh, HundredTinyShellsStayHundredSpheres)
@@ -209,8 +240,7 @@ TEST(LocalRemesh, SmoothSurfacesGetWellShapedTriangles)
         expectSameTopology(result, input);
         const QualityMetrics quality = computeQuality(result.mesh);
         const double meanEdge = meanEdgeLength(result.mesh);
-        std::printf("[ figures  ] %d vertices: theta_min %.2f, %%<30 %.3f, mean edge / target %.3f, V6 %.1f%%\n",
-                    result.mesh.vertexCount(), quality.thetaMin, quality.pctLt30, meanEdge / kTarget, quality.v6Pct);
+        printFigures(result, surface);
         EXPECT_GE(quality.thetaMin, 15.0);
         EXPECT_LE(quality.pctLt30, 0.5);
         EXPECT_NEAR(meanEdge / kTarget, 1.0, 0.15);
