@@ -5,10 +5,13 @@ runs them with) and on the nine meshes of resources/realworld at N = max(500, V/
 N = max(300, V/8) (V: the input's vertices as `fcvt metrics` counts them). One markdown row per
 input and N: the input's boundary loops, pieces (connected components) and genus (the sum over
 its pieces; "-" where a piece is non-manifold), then for each tool its output vertices, loops,
-pieces, genus, whether it kept the topology (topology_classes.compare: every part, a component
-with 0.5 % of the area, comes back as one shell with its genus and loops, holes FCVT closes by
-design excepted, no parts merged) and seconds (whole command), and the ratio of FCVT's vertices
-to mmgs's (issue 52's target: at most 0.5 where mmgs keeps the topology).
+pieces, genus, whether it kept the topology and seconds (whole command), and the ratio of
+FCVT's vertices to mmgs's (issue 52's target: at most 0.5 where mmgs keeps the topology).
+"Kept" is topology_classes.compare: every part (a component with 0.5 % of the area) comes back
+as one shell with its genus and loops, holes FCVT closes by design excepted, no parts merged;
+the non-manifold vertices of both meshes are split one per fan first (the output's counted as
+"pinched"). What broke: lost, merged, split (a part in several shells), genus, torn (more loops
+than the part), holes (loops lost).
 
   python3 bench/topology.py BUILD/cli/fcvt [--threads 2] [--tools fcvt mmgs] [NAME ...]
 
@@ -49,17 +52,20 @@ def topo(parts):
     return f"{loops} / {pieces} / {genus}"
 
 
-def verdict(problems):
-    """"yes", or "no" and what broke, in a few words."""
+def verdict(result):
+    """"yes", or "no" and what broke, in a few words; "(N pinched)": the output's non-manifold
+    vertices (split before measuring)."""
+    problems = result["problems"]
+    pinched = f" ({result['pinched']} pinched)" if result["pinched"] else ""
     if not problems:
-        return "yes"
+        return "yes" + pinched
     what = []
-    for word, text in (("lost", "lost"), ("merged", "merged"), ("output shells", "split"), ("output genus", "genus"),
-                       ("boundary loops", "loops")):
+    for word, text in (("lost (no output shell)", "lost"), ("merged", "merged"), ("output shells", "split"),
+                       ("output genus", "genus"), ("boundary loops, input", "torn"), ("loops of the parts lost", "holes")):
         n = sum(word in p for p in problems)
         if n:
             what.append(text if n == 1 else f"{n} {text}")
-    return "no: " + ", ".join(what)
+    return "no: " + ", ".join(what) + pinched
 
 
 def main():
@@ -116,9 +122,10 @@ def main():
                         closed = tc.holes_closed(r, run.stderr)
                         repair = r.get("repair") or {}
                         weld = repair.get("weld_distance", 0.0) if repair.get("welded_vertices", 0) > 0 else 0.0
-                        result = tc.compare(mesh, tc.read_mesh(out), closed, weld_distance=weld)
-                        f_v = len({c for t in tc.read_mesh(out)[1] for c in t})
-                        kept = verdict(result["problems"])
+                        fm = tc.read_obj(out)  # as written: split copies of a vertex stay apart
+                        result = tc.compare(mesh, fm, closed, weld_distance=weld)
+                        f_v = len({c for t in fm[1] for c in t})
+                        kept = verdict(result)
                         fcvt_cells = [str(f_v), topo(result["out_shells"]), kept, f"{seconds:.2f}"]
                     except (SystemExit, subprocess.CalledProcessError, OSError, ValueError) as e:
                         fcvt_cells = ["failed: " + (str(e).strip().splitlines() or ["?"])[-1][:60], "", "", ""]
@@ -132,13 +139,13 @@ def main():
                         os.remove(mout)
                     try:
                         seconds = timed(["/usr/bin/python3", MMGS, obj, mout, str(n)])[0]
-                        mm = tc.read_mesh(mout)
+                        mm = tc.read_obj(mout)
                         if not mm[1]:
                             raise SystemExit("no faces written")
                         res = tc.compare(mesh, mm, 0, weld_distance=weld)
                         m_v = len({c for t in mm[1] for c in t})
                         m_kept = not res["problems"]
-                        kept = verdict(res["problems"])
+                        kept = verdict(res)
                         mmgs_cells = [str(m_v), topo(res["out_shells"]), kept, f"{seconds:.2f}"]
                     except (SystemExit, subprocess.CalledProcessError, OSError, ValueError) as e:
                         mmgs_cells = ["failed: " + (str(e).strip().splitlines() or ["?"])[-1][:60], "", "", ""]

@@ -82,6 +82,8 @@ def check_run(fcvt, name, path, inp, n, extra, work):
         check(False, f"{label}: {problem}")
     if len(result["problems"]) > 8:
         check(False, f"{label}: ... and {len(result['problems']) - 8} more topology problems")
+    check(r["output"]["manifold"] and not result["pinched"], f"{label}: the output is not manifold "
+          f"({result['pinched']} non-manifold vertex copies)")
     check(m["parts"] == len(result["parts"]), f"{label}: metrics counts {m['parts']} parts, the input has "
           f"{len(result['parts'])}")
     check(m["part_gap"] is not None and m["part_gap"] <= 2.0, f"{label}: a part is {m['part_gap']} edge lengths "

@@ -536,10 +536,15 @@ def compare(inp, out, closed_by_design=0, weld_distance=0.0):
     that is no shell's home is merged into a shell where 3 of its vertices (or 2 and a quarter
     of them) are closest to it, else lost. weld_distance > 0: the input's border vertices within
     it are welded first (the cracks fcvt's repair welds: repair.weld_distance in its report).
-    Returns a dict: problems (list of messages), in_shells, out_shells, parts, matched (input
-    shell -> output shells), deficit (boundary loops the parts lost)."""
+    The output's non-manifold vertices are split alike (their count: pinched; whether the output
+    is manifold is the caller's check). Returns a dict: problems (list of messages), in_shells,
+    out_shells, parts, matched (input shell -> output shells), deficit (boundary loops the parts
+    lost), pinched."""
     inp, index = prepared_input(inp, weld_distance)
     in_shells = shells(inp)
+    pinched = len(out[0])
+    out = split_fans(out)
+    pinched = len(out[0]) - pinched
     out_shells = shells(out)
     total = sum(s["area"] for s in in_shells) or 1.0
     shell_of_face = {}
@@ -590,7 +595,7 @@ def compare(inp, out, closed_by_design=0, weld_distance=0.0):
     if deficit > closed_by_design:
         problems.append(f"{deficit} boundary loops of the parts lost, {closed_by_design} holes closed by design")
     return {"problems": problems, "in_shells": in_shells, "out_shells": out_shells, "parts": parts,
-            "matched": matched, "deficit": deficit}
+            "matched": matched, "deficit": deficit, "pinched": pinched}
 
 
 def describe(s, total):
