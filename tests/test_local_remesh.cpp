@@ -248,6 +248,26 @@ TEST(LocalRemesh, SmoothSurfacesGetWellShapedTriangles)
     }
 }
 
+TEST(LocalRemesh, TargetLengthPerFaceIsFollowed)
+{
+    // A 12 x 12 square: half the target on its x < 6 half.
+    const TriMesh surface = scaled(testmesh::planeGrid(24), 12.0);
+    std::vector<double> lengths(surface.faces.size(), kTarget);
+    for (int f = 0; f < surface.faceCount(); ++f)
+        if (surface.vertices[surface.faces[f][0]].x() < 6 - 1e-9 || surface.vertices[surface.faces[f][1]].x() < 6 - 1e-9)
+            lengths[f] = 0.5 * kTarget;
+    const ClosestPointTree tree(surface);
+    const std::vector<char> all(surface.faces.size(), 1);
+    const LocalRemeshResult result = remeshLocally({surface, tree, all, {}, {}, lengths}, {});
+    expectSameTopology(result, computeTopology(surface));
+    int fine = 0, coarse = 0;
+    for (const Vec3& p : result.mesh.vertices) (p.x() < 5 ? fine : p.x() > 7 ? coarse : fine) += p.x() < 5 || p.x() > 7;
+    // Edges half as long: up to four times as many vertices per area (5 x 12 on each side
+    // counted); the input's own edges, half a target, are not short enough there to collapse.
+    EXPECT_GT(fine, 2 * coarse);
+    EXPECT_LT(fine, 5 * coarse);
+}
+
 TEST(LocalRemesh, CubeKeepsItsEdgesAndCorners)
 {
     std::vector<double> c{0, 1, 2, 3, 4};
