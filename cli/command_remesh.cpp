@@ -68,10 +68,12 @@ void printUsage()
         "                        non-orientable pieces cut, components too small for N dropped)\n"
         "  --keep-holes          keep every hole open (by default a hole under 2 edge lengths across\n"
         "                        is closed before remeshing, counted in a warning)\n"
-        "  --exact-count         keep N even where the surface is thinner than the edge length (by\n"
-        "                        default the vertex density is raised there, locally, up to 2 N\n"
-        "                        vertices in all, so that closed shells keep their genus; a warning\n"
-        "                        and the report's thin_parts say how many vertices were added)\n"
+        "  --exact-count         keep N even where the topology needs more vertices (by default the\n"
+        "                        density is raised where the surface is thinner than the edge length,\n"
+        "                        and a shell whose topology the triangulation still loses is remeshed\n"
+        "                        by local operations on the input: every shell, hole and handle kept;\n"
+        "                        a warning and the report's thin_parts and local_shells say how many\n"
+        "                        vertices were added and why)\n"
         "  --feature-angle DEG   input edges with a dihedral angle >= DEG degrees are sharp features the\n"
         "                        output follows, 0..180 (default %g: off)\n"
         "  --adaptive D          sample density: none (uniform) or curvature (more vertices where the\n"
@@ -198,6 +200,22 @@ struct RunFigures {
     TopologySummary outputTopology;
 };
 
+//! The vertices asked for, the output's, and what the vertices beyond the count asked for are:
+//! samples added on thin parts, the shells remeshed by local operations (their vertices less the
+//! triangulation's there), the rest (cells cut in pieces by thin walls, the valence stage).
+nlohmann::ordered_json vertexCountJson(const RemeshParams& params, const RemeshResult& result)
+{
+    const int asked = params.initialSamples.empty() ? params.vertexCount : static_cast<int>(params.initialSamples.size());
+    const int output = result.mesh.vertexCount();
+    const int localShells = result.localShells.vertices - result.localShells.rdtVertices;
+    return {{"asked", asked},
+            {"output", output},
+            {"added_vertices", std::max(0, output - asked)},
+            {"thin_part_samples", result.thinParts.added},
+            {"local_shells", localShells},
+            {"other", output - asked - result.thinParts.added - localShells}};
+}
+
 //! The --report JSON of one run.
 nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string& outPath, const RemeshParams& params,
                                     double targetLength, const RemeshResult& result, const RunFigures& figures,
@@ -231,6 +249,13 @@ nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string
               {"thinnest", result.thinParts.thinnest},
               {"capped", result.thinParts.capped},
               {"side_aware_cells", result.thinParts.sideAwareCells}}},
+            {"vertex_count", vertexCountJson(params, result)},
+            {"local_shells",
+             {{"shells", result.localShells.shells},
+              {"faces", result.localShells.faces},
+              {"rdt_vertices", result.localShells.rdtVertices},
+              {"vertices", result.localShells.vertices},
+              {"reasons", result.localShells.reasons}}},
             {"time_s", times},
             {"metrics", metricsJson(result.metrics)},
             {"input", topologyJson(result.inputTopology)},

@@ -27,6 +27,32 @@ private:
     int restore_;
 };
 
+//! Above this share over the count asked for, the output's vertex count is reported as raised:
+//! the RDT's count varies by a percent or two with the samples' places.
+constexpr double kMoreVerticesShare = 0.03;
+
+//! Whenever the output has more vertices than asked for: how many more, and why.
+std::string moreVerticesWarning(int vertices, int asked, const RemeshResult& result, const RemeshParams& params)
+{
+    if (!params.initialSamples.empty() || vertices <= asked * (1 + kMoreVerticesShare)) return {};
+    std::string why;
+    if (result.thinParts.added > 0) why += std::to_string(result.thinParts.added) + " samples added on thin parts";
+    if (result.localShells.shells > 0) {
+        if (!why.empty()) why += "; ";
+        why += std::to_string(result.localShells.shells) + " shells remeshed by local operations to keep their topology (" +
+               std::to_string(result.localShells.vertices) + " vertices there instead of " +
+               std::to_string(result.localShells.rdtVertices) + ")";
+    }
+    const int explained = asked + result.thinParts.added + result.localShells.vertices - result.localShells.rdtVertices;
+    if (vertices > explained + asked * kMoreVerticesShare) {
+        if (!why.empty()) why += "; ";
+        why += "cells cut in several pieces by thin walls, each piece a vertex";
+    }
+    return std::to_string(vertices - asked) + " vertices added beyond the " + std::to_string(asked) + " asked for (" +
+           std::to_string(vertices) + " in all) to keep the input's topology: " + why +
+           " (--exact-count keeps the count and may lose the topology)";
+}
+
 }  // namespace
 
 std::string vertexCountRange()
@@ -145,7 +171,11 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     result.fcvtIterations = pass.fcvtIterations;
     if (pass.lattice) result.lattice = *pass.lattice;
 
-    ValencedMesh valenced = optimiseValence(std::move(pass.extracted), context);
+    TopologyKept topology = keepTopology(std::move(pass.extracted), kept.input, context);
+    if (!topology.warning.empty()) result.warnings.push_back(topology.warning);
+    result.localShells = std::move(topology.report);
+
+    ValencedMesh valenced = optimiseValence(std::move(topology.extracted), context);
     result.valence = valenced.stats;
     TriMesh mesh = std::move(valenced.mesh);
     if (surface.simplified) {
@@ -158,6 +188,8 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
         result.outputNormals = std::move(frames.normals);
         result.outputDirections = std::move(frames.directions);
     }
+    const std::string moreVertices = moreVerticesWarning(mesh.vertexCount(), sampleCount, result, params);
+    if (!moreVertices.empty()) result.warnings.push_back(moreVertices);
     Measurement measured = measure(mesh, surface, *tree, params, pipeline);
     result.outputTopology = measured.outputTopology;
     result.warnings.insert(result.warnings.end(), measured.warnings.begin(), measured.warnings.end());

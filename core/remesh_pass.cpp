@@ -53,7 +53,7 @@ InitialSamples placeSamples(const PassContext& context, const OptimisationPlan& 
             lattice.seed = p.seed;
             std::vector<int> faces;  // each point's face: the hint of its closest-point query
             out.lattice = std::make_unique<LatticeReport>();
-            out.seeds = latticeSamples(surface, context.field.field, p.vertexCount, lattice, out.lattice.get(),
+            out.seeds = latticeSamples(surface, context.field.field, pass.sampleCount, lattice, out.lattice.get(),
                                        &context.hierarchy, &faces);
             std::vector<Vec3>& seeds = out.seeds;
 #pragma omp parallel for schedule(static)
@@ -150,7 +150,8 @@ ExtractedMesh extractMesh(const PassContext& context, EnergyFunction& energy, co
         dropDebris(rdt, kDebrisFaces, kDebrisReachEdges * kWorkingEdgeLength);
         out.warnings = std::move(rdt.warnings);
         out.mesh = std::move(rdt.mesh);
-        if (out.mesh.faces.empty())
+        // Without exactCount, keepTopology remeshes the shells by local operations instead.
+        if (out.mesh.faces.empty() && (context.params.exactCount || !context.params.initialSamples.empty()))
             throw SolverError(std::to_string(sampleCount) + " vertices are too few for this surface: they form no " +
                               "triangle on it (it is thinner than the edge length everywhere); use more vertices");
         for (int seed : rdt.seedOfVertex)

@@ -64,6 +64,16 @@ struct RemeshResult {
         //! The kept pass has side-aware cells (a sample owns nothing of the far side of a wall).
         bool sideAwareCells = false;
     } thinParts;
+    //! Shells (connected components of the surface) whose restricted Delaunay triangulation did not
+    //! keep their topology even after the thin-part passes, remeshed by local operations on the
+    //! surface instead (local_remesh.h), which keep it by construction. None with exactCount.
+    struct LocalShells {
+        int shells = 0;       //!< shells remeshed by local operations
+        int faces = 0;        //!< faces of the optimisation surface in them
+        int rdtVertices = 0;  //!< the RDT's vertices there, replaced
+        int vertices = 0;     //!< the local remeshing's vertices there
+        std::string reasons;  //!< what was wrong with the RDT's pieces there, in words
+    } localShells;
 };
 
 //! The mesh remesh() computed the field and its singularities on, for a log or report next to

@@ -214,6 +214,7 @@ PassResult optimiseAndExtract(const PassContext& context, const PassInput& pass)
 //! remeshThinPartsAgain: the pass kept, and what the thin-part passes did.
 struct ThinPartsOutcome {
     PassResult pass;
+    PassInput input;  //!< the kept pass's density and sample count
     RemeshResult::ThinParts report;
     std::string warning;  //!< set when a later pass was kept: how many vertices it added, and why
 };
@@ -222,6 +223,19 @@ struct ThinPartsOutcome {
 //! (thin_parts.h) and the samples are placed, optimised and triangulated again; the pass nearest
 //! the input's topology is kept. Not with RemeshParams::exactCount or initial samples.
 ThinPartsOutcome remeshThinPartsAgain(PassResult first, const PassInput& firstInput, const PassContext& context);
+
+//! keepTopology: the mesh with the shells whose topology the RDT lost remeshed locally.
+struct TopologyKept {
+    ExtractedMesh extracted;
+    RemeshResult::LocalShells report;
+    std::string warning;  //!< set when shells were remeshed locally: how many, why, the vertices there
+};
+//! Topology first: each connected component (shell) of the optimisation surface whose output
+//! pieces are not one piece with the shell's genus and boundary loops, within reach of all of
+//! it and merged with no other, is remeshed by local operations on the surface (local_remesh.h)
+//! at the pass's density (`pass`) or the thin parts' if finer. Not with
+//! RemeshParams::exactCount or initial samples.
+TopologyKept keepTopology(ExtractedMesh extracted, const PassInput& pass, const PassContext& context);
 
 //! Whether the run uses E_field (FCVT iterations with lambda > 0), and so computes the field.
 bool usesField(const RemeshParams& params);

@@ -2,6 +2,7 @@
 // surface is thinner than the edge length, until the output's topology is the input's.
 #include "boundary.h"
 #include "closest_point.h"
+#include "errors.h"
 #include "metrics.h"
 #include "remesh_stages.h"
 #include "thin_parts.h"
@@ -253,6 +254,7 @@ public:
         PassOutcome& best = best_[0];
         if (!best.made()) {
             out.pass = std::move(first_.result);
+            out.input = first_.input;
             return out;
         }
         out.report.added = best.input.sampleCount - first_.input.sampleCount;
@@ -262,6 +264,7 @@ public:
         out.report.sideAwareCells = best.input.sideAwareCells;
         out.warning = thinPartsWarning(context_, first_, best);
         out.pass = std::move(best.result);
+        out.input = best.input;
         return out;
     }
 
@@ -359,20 +362,58 @@ private:
     int maxVertices_ = 0, maxSampleFactorCount_ = 0;
 };
 
+//! RemeshParams::exactCount: a pass whose RDT has more vertices than this share over the samples
+//! (cells cut in pieces by walls thinner than them, each piece a vertex) runs again with
+//! proportionally fewer samples, at most kExactCountPasses more times, so the count is the one asked
+//! (fewer samples make larger cells, which thin walls cut into more pieces: the count is aimed at again).
+constexpr double kExactCountShare = 0.03;
+constexpr int kExactCountPasses = 3;
+
+ThinPartsOutcome keepCountAskedFor(PassResult first, const PassInput& firstInput, const PassContext& context)
+{
+    ThinPartsOutcome out;
+    out.pass = std::move(first);
+    out.input = firstInput;
+    const int asked = firstInput.sampleCount;
+    for (int pass = 0; pass < kExactCountPasses; ++pass) {
+        const int got = out.pass.extracted.mesh.vertexCount();
+        // Only a pass over the count starts the passes; after one, a count under it is aimed at too.
+        const bool over = got > asked * (1 + kExactCountShare), under = got < asked * (1 - kExactCountShare);
+        if (!over && !(pass > 0 && under)) break;
+        PassInput input = out.input;
+        input.sampleCount = std::max(4, static_cast<int>(std::floor(double(input.sampleCount) * asked / got)));
+        PassResult again;
+        try {
+            again = optimiseAndExtract(context, input);
+        } catch (const SolverError&) {
+            break;  // so few samples make no triangle on the thin parts: the pass before stands
+        }
+        if (again.extracted.mesh.faces.empty() || std::abs(again.extracted.mesh.vertexCount() - asked) >= std::abs(got - asked))
+            break;
+        out.pass = std::move(again);
+        out.input = input;
+    }
+    return out;
+}
+
 }  // namespace
 
 ThinPartsOutcome remeshThinPartsAgain(PassResult first, const PassInput& firstInput, const PassContext& context)
 {
     const RemeshParams& p = context.params;
+    if (p.exactCount && p.initialSamples.empty() && !first.extracted.mesh.faces.empty())
+        return keepCountAskedFor(std::move(first), firstInput, context);
     if (p.exactCount || !p.initialSamples.empty() || first.extracted.mesh.faces.empty()) {
         ThinPartsOutcome out;
         out.pass = std::move(first);
+        out.input = firstInput;
         return out;
     }
     PassOutcome measured = takeOutcome(context, std::move(first), firstInput);  // topology and lost surface, once
     if (!thinPartsMayMend(measured.topology, context.surface.inputTopology) && measured.lost.points.empty()) {
         ThinPartsOutcome out;
         out.pass = std::move(measured.result);
+        out.input = firstInput;
         return out;
     }
     ThinPartPasses passes(context, std::move(measured));

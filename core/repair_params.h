@@ -18,8 +18,9 @@ struct RepairParams {
     //! A component is dropped when it would get fewer samples than this (vertexBudget × its
     //! share of the area): fewer samples than a tetrahedron's few make no surface of it.
     double minComponentSamples = 8;
-    //! ... unless it holds at least this fraction of the area (kept, with a warning).
-    double keepAreaFraction = 0.01;
+    //! ... unless it holds at least this fraction of the area (kept, with a warning): a part
+    //! (part_coverage.h counts components from 0.5 % of the area), which must come back.
+    double keepAreaFraction = 0.005;
     //! ... or it lies farther than this many edge lengths (of vertexBudget vertices over the
     //! whole area) from every component kept for its size: a part on its own, whose loss would
     //! show as a gap in the output (d_H), not a crumb beside the rest. Kept then if it also
