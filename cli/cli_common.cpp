@@ -13,22 +13,6 @@
 
 namespace fieldcvt::cli {
 
-FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser)
-{
-    const auto name = a.text("field");
-    if (!name) return fallback;
-    const std::string valid =
-        allowUser ? "extrinsic, curvature-max, curvature-min or user" : "extrinsic, curvature-max or curvature-min";
-    FieldSource source;
-    try {
-        source = fieldSourceFromName(*name);
-    } catch (const InvalidInputError&) {
-        throw UsageError("--field must be " + valid + ", got " + quoteInput(*name));
-    }
-    if (source == FieldSource::User && !allowUser) throw UsageError("--field must be " + valid + ", got " + quoteInput(*name));
-    return source;
-}
-
 namespace {
 
 //! Where writing `path` would put the bytes: symbolic links followed (dangling ones too, which
@@ -87,25 +71,6 @@ void checkOutputPath(const std::string& path, const std::string& input)
     std::error_code ec;
     if (!fs::is_directory(path, ec)) checkMeshExtension(path);  // a directory: "is a directory", not "unknown extension ''"
     checkWritable(path, input);
-}
-
-void checkOptions(const RemeshParams& params)
-{
-    ParameterNames names;
-    names.vertexCount = "--vertices";
-    names.lambda = "--lambda";
-    names.lloydIterations = "--lloyd-iterations";
-    names.cvtIterations = "--cvt-iterations";
-    names.fcvtIterations = "--fcvt-iterations";
-    names.threads = "--threads";
-    names.timeLimit = "--time-limit";
-    names.featureAngle = "--feature-angle";
-    names.gradation = "--gradation";
-    try {
-        checkRemeshParams(params, names);
-    } catch (const InvalidInputError& e) {
-        throw UsageError(e.what());
-    }
 }
 
 bool isPlyPath(const std::string& path)

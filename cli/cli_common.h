@@ -1,7 +1,11 @@
 #pragma once
-// Pieces shared by the fcvt subcommands: option translation to core types, output path checks,
-// the user field from a PLY file, timing.
+// Pieces shared by the fcvt subcommands: output path checks, the user field from a PLY file,
+// timing; and the names of the front-end library (frontend/: options, reports) the CLI shares
+// with the Python module.
 #include "arguments.h"
+#include "remesh_options.h"
+#include "remesh_report.h"
+#include "report.h"
 
 #include "field.h"
 #include "mesh.h"
@@ -14,9 +18,29 @@
 
 namespace fieldcvt::cli {
 
-//! `--field NAME` as a FieldSource (fieldcvt::fieldSourceFromName); `fallback` when absent. An
-//! unknown name, or "user" when `allowUser` is false, is a UsageError listing the valid names.
-FieldSource fieldOption(const Arguments& a, FieldSource fallback, bool allowUser);
+using frontend::Arguments;
+using frontend::UsageError;
+
+using frontend::applyTargetLength;
+using frontend::checkOptions;
+using frontend::fieldOption;
+using frontend::fieldOptionNames;
+using frontend::fieldParams;
+using frontend::remeshOptionNames;
+using frontend::remeshOptions;
+using frontend::sizedArea;
+using frontend::textureMethodFromText;
+
+using frontend::energyHistoryJson;
+using frontend::fieldJson;
+using frontend::metricsJson;
+using frontend::regionJson;
+using frontend::remeshReport;
+using frontend::repairJson;
+using frontend::textureSummaryJson;
+using frontend::topologyJson;
+using frontend::valenceJson;
+using frontend::writeJsonFile;
 
 //! What would make the final write of `path` fail or destroy the input, found before the long
 //! part rather than after it (IOError, exit 1): a directory, the file `input` itself (also
@@ -33,9 +57,6 @@ void checkDistinctOutputs(const std::string& path, const std::string& other, con
 
 //! checkWritable, and a mesh extension writeMesh handles.
 void checkOutputPath(const std::string& path, const std::string& input);
-
-//! The core's parameter check (checkRemeshParams) with the options' names: a UsageError.
-void checkOptions(const RemeshParams& params);
 
 //! True when the path ends in .ply (any case).
 bool isPlyPath(const std::string& path);

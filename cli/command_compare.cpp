@@ -1,11 +1,9 @@
 // `fcvt compare IN --vertices N`: CVT and FCVT on the same input with the same seed, and MeshLab's
 // built-in isotropic remeshing when a meshlabserver is found, one row per method in the layout of
 // the paper's Table 2.
-#include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "progress_printer.h"
-#include "report.h"
 
 #include "meshlab_isotropic.h"
 

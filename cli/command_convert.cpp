@@ -2,7 +2,6 @@
 // the input checks `fcvt remesh` makes; e.g. an OBJ that MeshLab 2020.09's importer aborts on,
 // turned into a PLY it opens. A non-manifold or non-orientable surface is written as read with a
 // warning (a converter converts what it can read, as MeshLab does); --strict refuses it.
-#include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "texture_files.h"

@@ -1,6 +1,5 @@
 // `fcvt field IN OUT.ply [--field F] [--seed S]`: the 6-RoSy field of a mesh, written as PLY
 // vertex properties, with its singularities (index sum = 6 chi on a closed surface).
-#include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
 
@@ -45,12 +44,10 @@ void printUsage()
 
 int runField(const std::vector<std::string>& args)
 {
-    const Arguments a(args, {"field", "seed"}, {"quiet", "help"});
+    const Arguments a(args, fieldOptionNames().valued, fieldOptionNames().flags);
     if (printedHelp(a, printUsage)) return 0;
     const auto [inPath, outPath] = inputAndOutput(a, "field");
-    FieldParams params;
-    params.source = fieldOption(a, params.source, true);
-    params.seed = a.unsignedInteger("seed", params.seed);
+    const FieldParams params = fieldParams(a);
     const bool quiet = a.flag("quiet");
     if (!isPlyPath(outPath))
         throw UsageError("field writes a .ply file (the only format with the field's vertex properties), got '" + outPath + "'");

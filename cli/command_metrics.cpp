@@ -1,8 +1,7 @@
 // `fcvt metrics MESH [--ref INPUT] [--json]`: the paper's Table 2 figures of a mesh file.
-#include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
-#include "report.h"
+#include "metrics_report.h"
 
 #include "mesh_io.h"
 #include "metrics.h"
@@ -34,19 +33,6 @@ void printUsage()
         "  -h, --help    show this help\n");
 }
 
-nlohmann::ordered_json partsJson(const PartCoverage& c)
-{
-    nlohmann::ordered_json j = nlohmann::ordered_json::object();
-    j["parts"] = static_cast<int>(c.parts.size());
-    // An output without faces leaves the gap infinite, which JSON cannot hold: null.
-    j["part_gap"] = std::isfinite(c.largestGap) ? nlohmann::ordered_json(c.largestGap) : nlohmann::ordered_json();
-    j["part_pieces"] = c.mostPieces;
-    j["small_parts"] = c.smallParts;
-    j["small_parts_area_pct"] = 100.0 * c.smallAreaFraction;
-    j["small_parts_gap"] = std::isfinite(c.smallPartsGap) ? nlohmann::ordered_json(c.smallPartsGap) : nlohmann::ordered_json();
-    return j;
-}
-
 void printTable(const std::string& path, const TriMesh& mesh, const nlohmann::ordered_json& metrics, const TopologySummary& t,
                 const nlohmann::ordered_json& parts)
 {
@@ -76,22 +62,14 @@ int runMetrics(const std::vector<std::string>& args)
     if (printedHelp(a, printUsage)) return 0;
     const std::string& path = fileArguments(a, 1, "metrics", "exactly one mesh file")[0];
     const TriMesh mesh = readMesh(path);
-    QualityMetrics quality = computeQuality(mesh);
-    nlohmann::ordered_json parts = nlohmann::ordered_json::object();
-    PartCoverage coverage;
-    if (auto ref = a.text("ref")) {
-        const TriMesh reference = readMesh(*ref);
-        const DistanceMetrics d = computeDistance(mesh, reference);
-        quality.dRms = d.rms;
-        quality.dH = d.hausdorff;
-        quality.dBoundary = boundaryDistance(mesh, reference);
-        coverage = measurePartCoverage(mesh, reference);
-        parts = partsJson(coverage);
-    }
-    nlohmann::ordered_json metrics = metricsJson(quality);
+    TriMesh reference;
+    if (auto ref = a.text("ref")) reference = readMesh(*ref);
+    const frontend::MeshMeasurement measured = frontend::measureMesh(mesh, a.has("ref") ? &reference : nullptr);
+    const nlohmann::ordered_json& metrics = measured.metrics;
+    const nlohmann::ordered_json& parts = measured.parts;
+    const PartCoverage& coverage = measured.coverage;
     if (a.flag("json")) {
-        metrics.update(parts);
-        std::printf("%s\n", metrics.dump(2).c_str());
+        std::printf("%s\n", measured.json().dump(2).c_str());
     } else {
         printTable(path, mesh, metrics, computeTopology(mesh), parts);
         for (size_t p = 0; p < coverage.parts.size(); ++p)

@@ -1,9 +1,7 @@
 // `fcvt remesh IN OUT --vertices N ...`: read, remesh with the core, write, summarise, report.
-#include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "progress_printer.h"
-#include "report.h"
 #include "output_texture.h"
 
 #include "errors.h"
@@ -128,171 +126,6 @@ void printUsage()
         static_cast<unsigned long long>(defaults.seed), defaults.threads);
 }
 
-//! The options as the core's parameters: the syntax checked here, the ranges by the core's one
-//! check (checkRemeshParams) in the options' names, as a usage error before any work.
-RemeshParams paramsFrom(const Arguments& a)
-{
-    if (a.has("vertices") == a.has("target-length"))
-        throw UsageError(
-            "remesh needs exactly one of --vertices N (the target vertex count) and --target-length L "
-            "(the target edge length)");
-    RemeshParams p;
-    p.vertexCount = a.saturatedInt("vertices", p.vertexCount);
-    p.fieldSource = fieldOption(a, p.fieldSource, true);
-    p.lambda = a.number("lambda", p.lambda);
-    if (a.has("lloyd-iterations"))  // from either start
-        p.lloydIterations = p.latticeLloydIterations = a.saturatedInt("lloyd-iterations", p.lloydIterations);
-    p.cvtIterations = a.saturatedInt("cvt-iterations", p.cvtIterations);
-    if (a.has("fcvt-iterations"))  // at any size
-        p.fcvtIterations = p.largeRunFcvtIterations = a.saturatedInt("fcvt-iterations", p.fcvtIterations);
-    p.seed = a.unsignedInteger("seed", p.seed);
-    p.threads = a.saturatedInt("threads", p.threads);
-    p.timeLimitSeconds = a.number("time-limit", p.timeLimitSeconds);
-    p.valenceOptimization = !a.flag("no-valence");
-    p.latticeStart = !a.flag("random-start");
-    if (a.flag("full-surface")) p.optimisationFacesPerSample = 0;
-    p.repair = !a.flag("no-repair");
-    if (a.flag("keep-holes")) p.closeHolesUnder = 0;
-    p.exactCount = a.flag("exact-count");
-    p.featureAngleDegrees = a.number("feature-angle", p.featureAngleDegrees);
-    if (const auto adaptive = a.text("adaptive")) {
-        if (*adaptive == "curvature")
-            p.density = DensitySource::Curvature;
-        else if (*adaptive == "none")
-            p.density = DensitySource::Uniform;
-        else
-            throw UsageError("--adaptive must be 'curvature' or 'none', got " + quoteInput(*adaptive));
-    }
-    if (a.has("gradation") && p.density != DensitySource::Curvature)
-        throw UsageError("--gradation applies to --adaptive curvature only");
-    p.gradation = a.number("gradation", p.gradation);
-    checkOptions(p);
-    return p;
-}
-
-nlohmann::ordered_json paramsJson(const RemeshParams& p)
-{
-    return {{"vertices", p.vertexCount},
-            {"field", fieldSourceName(p.fieldSource)},
-            {"lambda", p.lambda},
-            {"lloyd_iterations", p.lloydIterations},
-            {"lattice_lloyd_iterations", p.latticeLloydIterations},
-            {"cvt_iterations", p.cvtIterations},
-            {"fcvt_iterations", p.fcvtIterations},
-            {"large_run_fcvt_iterations", p.largeRunFcvtIterations},
-            {"large_run_samples", p.largeRunSamples},
-            {"seed", p.seed},
-            {"threads", p.threads},
-            {"time_limit_s", p.timeLimitSeconds},
-            {"valence_optimization", p.valenceOptimization},
-            {"lattice_start", p.latticeStart},
-            {"feature_angle", p.featureAngleDegrees},
-            {"adaptive", p.density == DensitySource::Curvature ? "curvature" : "none"},
-            {"gradation", p.gradation},
-            {"repair", p.repair},
-            {"optimisation_faces_per_sample", p.optimisationFacesPerSample}};
-}
-
-//! What the --report JSON takes besides the parameters and the core's result.
-struct RunFigures {
-    double readSeconds = 0, writeSeconds = 0, totalSeconds = 0;
-    double meanEdge = 0;
-    TopologySummary outputTopology;
-};
-
-//! The vertices asked for, the output's, and what the vertices beyond the count asked for are:
-//! samples added on thin parts, the shells remeshed by local operations (their vertices less the
-//! triangulation's there), the rest (cells cut in pieces by thin walls, the valence stage).
-nlohmann::ordered_json vertexCountJson(const RemeshParams& params, const RemeshResult& result)
-{
-    const int asked = params.initialSamples.empty() ? params.vertexCount : static_cast<int>(params.initialSamples.size());
-    const int output = result.mesh.vertexCount();
-    const int localShells = result.localShells.vertices - result.localShells.rdtVertices;
-    return {{"asked", asked},
-            {"output", output},
-            {"added_vertices", std::max(0, output - asked)},
-            {"thin_part_samples", result.thinParts.added},
-            {"local_shells", localShells},
-            {"other", output - asked - result.thinParts.added - localShells}};
-}
-
-//! The --report JSON of one run.
-nlohmann::ordered_json remeshReport(const std::string& inPath, const std::string& outPath, const RemeshParams& params,
-                                    double targetLength, const RemeshResult& result, const RunFigures& figures,
-                                    const std::vector<std::string>& warnings, const std::vector<std::string>& notes,
-                                    const nlohmann::ordered_json& region)
-{
-    nlohmann::ordered_json times = nlohmann::ordered_json::object();
-    times["read"] = figures.readSeconds;
-    // A stage run twice (remeshThinPartsAgain) counts both times.
-    for (const StageTime& stage : result.stageTimes) times[stage.stage] = times.value(stage.stage, 0.0) + stage.seconds;
-    times["write"] = figures.writeSeconds;
-    times["total"] = figures.totalSeconds;
-    nlohmann::ordered_json paramsOut = paramsJson(params);
-    if (targetLength > 0) paramsOut["target_length"] = targetLength;
-    nlohmann::ordered_json field = fieldJson(params.fieldSource, result.singularities);
-    // The core computes a field only when it is used (lambda > 0 and FCVT iterations).
-    field["computed"] = !result.outputDirections.empty() || !result.singularities.empty();
-    if (field["computed"]) field["mesh"] = fieldMeshDescription(result);
-    return {{"input_file", inPath},
-            {"output_file", outPath},
-            {"vertices", result.mesh.vertexCount()},
-            {"faces", result.mesh.faceCount()},
-            {"mean_edge_length", figures.meanEdge},
-            {"evaluations", result.evaluations},
-            {"fcvt_iterations", result.fcvtIterations},
-            {"threads_used", result.threads},
-            {"optimisation_faces", result.optimisationFaces},
-            {"thin_parts",
-             {{"added_vertices", result.thinParts.added},
-              {"faces", result.thinParts.faces},
-              {"thinnest", result.thinParts.thinnest},
-              {"capped", result.thinParts.capped},
-              {"side_aware_cells", result.thinParts.sideAwareCells}}},
-            {"vertex_count", vertexCountJson(params, result)},
-            {"local_shells",
-             {{"shells", result.localShells.shells},
-              {"faces", result.localShells.faces},
-              {"rdt_vertices", result.localShells.rdtVertices},
-              {"vertices", result.localShells.vertices},
-              {"reasons", result.localShells.reasons}}},
-            {"time_s", times},
-            {"metrics", metricsJson(result.metrics)},
-            {"input", topologyJson(result.inputTopology)},
-            {"output", topologyJson(figures.outputTopology)},
-            {"repair", repairJson(params.repair, result.repair)},
-            {"params", paramsOut},
-            {"field", field},
-            {"valence", valenceJson(params.valenceOptimization, result.valence)},
-            {"start", result.lattice.passes > 0 ? nlohmann::ordered_json{{"kind", "lattice"},
-                                                                         {"spacing", result.lattice.spacing},
-                                                                         {"passes", result.lattice.passes},
-                                                                         {"samples", result.lattice.samples}}
-                                                : nlohmann::ordered_json{{"kind", "random"}}},
-            {"energy_history", energyHistoryJson(result.energyHistory)},
-            {"region", region},
-            {"warnings", warnings},
-            {"notes", notes}};
-}
-
-//! The --report's "region" object (--region): the pieces, the border kept, the new part's figures.
-nlohmann::ordered_json regionJson(const std::string& property, const RegionRemeshResult& run)
-{
-    const auto isNew = [](int origin) { return origin < 0; };
-    return {{"property", property},
-            {"whole_mesh", run.wholeMesh},
-            {"pieces", run.regions},
-            {"kept_pieces", run.keptRegions},
-            {"added_faces", run.addedFaces},
-            {"border_vertices", run.borderVertices},
-            {"target_length", run.targetLength},
-            {"worst_border_ratio", run.worstBorderRatio},
-            {"new_vertices", std::count_if(run.vertexOrigin.begin(), run.vertexOrigin.end(), isNew)},
-            {"new_faces", std::count_if(run.faceOrigin.begin(), run.faceOrigin.end(), isNew)},
-            {"metrics", metricsJson(run.result.metrics)},
-            {"interior_metrics", metricsJson(run.interiorMetrics)}};
-}
-
 //! Writes OUT: a PLY gets the field at its vertices when one was used and, with --region (a
 //! non-empty `regionProperty`), that property back: 1 on the new faces, the input's value on the
 //! kept ones (not when everything was selected: then the output is the plain remesh's); a
@@ -331,15 +164,6 @@ void printRegionLine(const RegionRemeshResult& run)
         run.interiorMetrics.thetaMin, run.interiorMetrics.qAvg);
 }
 
-//! The area --target-length applies to: the region's with --region (`selected` not empty).
-double sizedArea(const TriMesh& input, const std::vector<char>& selected)
-{
-    if (selected.empty()) return surfaceArea(input);
-    double area = 0;
-    for (int f = 0; f < input.faceCount(); ++f) area += selected[size_t(f)] ? faceArea(input, f) : 0.0;
-    return area;
-}
-
 //! The faces whose `property` value is non-zero; InvalidInputError when there are none.
 std::vector<char> regionFromProperty(const std::string& path, const std::string& property, const VertexAttributes& attributes)
 {
@@ -367,21 +191,13 @@ std::vector<std::string> runNotes(const std::string& inPath, const MeshReadInfo&
 
 int runRemesh(const std::vector<std::string>& args)
 {
-    const Arguments a(args,
-                      {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations",
-                       "seed", "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region", "texture"},
-                      {"quiet", "help", "no-valence", "no-repair", "keep-holes", "exact-count", "full-surface", "random-start",
-                       "no-texture", "overwrite"});
+    const Arguments a(args, remeshOptionNames().valued, remeshOptionNames().flags);
     if (printedHelp(a, printUsage)) return 0;
     const auto [inPath, outPath] = inputAndOutput(a, "remesh");
-    RemeshParams params = paramsFrom(a);
-    // Checked before reading the input (a usage error); applied once the area is known.
-    const double targetLength = a.number("target-length", 0.0, 0.0, Arguments::Bound::Exclusive);
-    const bool quiet = a.flag("quiet");
-    // The distances (dense sampling of both meshes: 0.05-0.26 s on the benchmark rows) are
-    // only ever printed or reported; the quality figures and the topology check stay.
-    if (quiet && !a.has("report")) params.computeDistances = false;
-    params.computeSingularities = a.has("report");  // only the report lists them
+    frontend::RemeshOptions options = remeshOptions(a);
+    RemeshParams& params = options.params;
+    const double targetLength = options.targetLength;
+    const bool quiet = options.quiet;
     if (params.fieldSource == FieldSource::User && !isPlyPath(inPath))
         throw UsageError("--field user takes the field from the input's PLY vertex properties rosy_x rosy_y rosy_z; " + inPath +
                          " is not a .ply file");
@@ -405,16 +221,7 @@ int runRemesh(const std::vector<std::string>& args)
     MeshTexture inputTexture;
     const TriMesh input = readMesh(inPath, &readInfo, &inputAttributes, a.flag("no-texture") ? nullptr : &inputTexture);
     const std::vector<char> selected = region ? regionFromProperty(inPath, *region, inputAttributes) : std::vector<char>{};
-    std::string sizeWarning;
-    if (targetLength > 0) {
-        try {
-            const VertexCountFromLength size = vertexCountForLength(sizedArea(input, selected), targetLength, "--target-length");
-            params.vertexCount = size.vertexCount;
-            sizeWarning = size.warning;
-        } catch (const InvalidInputError& e) {
-            throw UsageError(e.what());  // an argument that does not fit this input: a usage error, as before
-        }
-    }
+    const std::string sizeWarning = applyTargetLength(options, sizedArea(input, selected));
     if (params.fieldSource == FieldSource::User) params.userDirections = userField(inPath, inputAttributes);
     const double readSeconds = secondsSince(start);
 

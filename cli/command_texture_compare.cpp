@@ -1,6 +1,5 @@
 // `fcvt texture-compare INPUT OUTPUT`: how much OUTPUT's texture differs from INPUT's, seen unlit
 // from the same cameras (issue 36, item 3); the yardstick is INPUT against itself moved by half a pixel.
-#include "arguments.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "texture_files.h"

@@ -1,6 +1,6 @@
 // `fcvt`: field-aligned CVT remeshing from the command line. Every failure ends as exactly one
 // line "fcvt: error: <message>" on stderr: exit code 2 for usage errors, 1 for the rest.
-#include "arguments.h"
+#include "cli_common.h"
 #include "commands.h"
 #include "errors.h"
 #include "huge_pages.h"

@@ -2,7 +2,6 @@
 // the images read and written here.
 #include "output_texture.h"
 
-#include "arguments.h"
 #include "cli_common.h"
 #include "texture_files.h"
 
@@ -16,14 +15,6 @@
 namespace fieldcvt::cli {
 
 namespace fs = std::filesystem;
-
-TextureMethod textureMethodFromText(const std::string& text)
-{
-    if (text == "auto") return TextureMethod::Auto;
-    if (text == "keep") return TextureMethod::Keep;
-    if (text == "bake") return TextureMethod::Bake;
-    throw UsageError("--texture must be auto, keep or bake (got '" + text + "')");
-}
 
 namespace {
 
@@ -110,10 +101,7 @@ std::string textureNote(const WrittenTexture& written)
 nlohmann::ordered_json textureJson(const MeshTexture& input, bool dropped, const WrittenTexture& written)
 {
     const fieldcvt::OutputTexture& texture = written.made;
-    nlohmann::ordered_json json = {
-        {"input_has_texture", dropped ? nlohmann::ordered_json() : nlohmann::ordered_json(!input.empty())},
-        {"no_texture_option", dropped},
-        {"kept", !texture.texture.empty()}};
+    nlohmann::ordered_json json = textureSummaryJson(!input.empty(), dropped, !texture.texture.empty());
     if (texture.texture.empty()) return json;
     json["mode"] = texture.baked ? "bake" : "keep_atlas";
     json["charts"] = texture.charts;

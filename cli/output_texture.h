@@ -13,9 +13,6 @@
 
 namespace fieldcvt::cli {
 
-//! "auto", "keep" or "bake" (a UsageError otherwise).
-TextureMethod textureMethodFromText(const std::string& text);
-
 //! The output's texture (core/texture_output.h) with its files in place.
 struct WrittenTexture {
     fieldcvt::OutputTexture made;  //!< `made.texture` empty: the output has no texture coordinates

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <utility>
 
-namespace fieldcvt::cli {
+namespace fieldcvt::frontend {
 
 namespace {
 
@@ -106,4 +106,4 @@ void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json)
     if (!out) throw IOError(path + ": cannot write the report");
 }
 
-}  // namespace fieldcvt::cli
+}  // namespace fieldcvt::frontend

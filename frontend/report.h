@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace fieldcvt::cli {
+namespace fieldcvt::frontend {
 
 //! Exactly q_min q_avg theta_min theta_min_avg theta_max pct_lt30 pct_gt90 v6_pct d_rms d_h;
 //! NaN (e.g. distances without a reference) becomes null.
@@ -38,4 +38,4 @@ nlohmann::ordered_json repairJson(bool enabled, const RepairReport& repair);
 //! Writes `json` (indented, trailing newline) to `path`; throws IOError on failure.
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json);
 
-}  // namespace fieldcvt::cli
+}  // namespace fieldcvt::frontend

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace fieldcvt::cli {
+namespace fieldcvt::frontend {
 
 Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::string>& valued,
                      const std::set<std::string>& flags)
@@ -122,4 +122,4 @@ double Arguments::number(const std::string& name, double fallback, double min, B
     return x;
 }
 
-}  // namespace fieldcvt::cli
+}  // namespace fieldcvt::frontend

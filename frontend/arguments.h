@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace fieldcvt::cli {
+namespace fieldcvt::frontend {
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -46,4 +46,4 @@ private:
     std::set<std::string> flags_;
 };
 
-}  // namespace fieldcvt::cli
+}  // namespace fieldcvt::frontend
