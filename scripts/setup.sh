@@ -15,6 +15,7 @@ packages=(
   x11-apps x11-utils
   f3d optipng pngquant xdotool
   clang libclang-rt-14-dev libomp-dev clang-format
+  pybind11-dev python3-dev python3-numpy python3-meshio
 )
 
 missing=()

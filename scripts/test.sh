@@ -17,6 +17,12 @@ FCVT_FUZZ_SECONDS="${FCVT_FUZZ_SECONDS:-30}" bash "$here/scripts/test-sanitizers
 cd "${FCVT_BUILD_DIR:-$here/build}"
 tests=0
 ctest --output-on-failure -j "$(nproc)" || tests=$?
+# Label python (the module `import fcvt`, python/tests/) runs with the rest; setup.sh installs
+# pybind11 and Python's headers, so no test of that label means the module was not built.
+if ! ctest -N -L python | grep -q "Total Tests: [1-9]"; then
+  echo "test.sh: no test of label python: the Python module was not built (pybind11-dev, python3-dev?)" >&2
+  tests=1
+fi
 if [ "$sanitizers" -ne 0 ]; then
   echo "test.sh: the sanitizer/fuzzing step failed (exit $sanitizers); what it found:" >&2
   grep -E "FINDING|\(Failed\)|\(Subprocess aborted\)|\(Timeout\)|SUMMARY:|runtime error|ERROR:|\*\*\* \[|fatal error|Failure$|FAIL" \
