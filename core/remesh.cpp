@@ -27,14 +27,17 @@ private:
     int restore_;
 };
 
-//! Above this share over the count asked for, the output's vertex count is reported as raised:
-//! the RDT's count varies by a percent or two with the samples' places.
+//! Above this share over the count asked for, and this many vertices, the output's vertex count
+//! is reported as raised: the RDT's count varies by a percent or two (a few vertices at 100)
+//! with the samples' places.
 constexpr double kMoreVerticesShare = 0.03;
+constexpr int kMoreVerticesFloor = 10;
 
 //! Whenever the output has more vertices than asked for: how many more, and why.
 std::string moreVerticesWarning(int vertices, int asked, const RemeshResult& result, const RemeshParams& params)
 {
-    if (!params.initialSamples.empty() || vertices <= asked * (1 + kMoreVerticesShare)) return {};
+    if (!params.initialSamples.empty() || vertices - asked <= std::max<double>(kMoreVerticesFloor, asked * kMoreVerticesShare))
+        return {};
     std::string why;
     if (result.thinParts.added > 0) why += std::to_string(result.thinParts.added) + " samples added on thin parts";
     if (result.localShells.shells > 0) {

@@ -362,10 +362,10 @@ private:
     int maxVertices_ = 0, maxSampleFactorCount_ = 0;
 };
 
-//! RemeshParams::exactCount: a pass whose RDT has more vertices than this share over the samples
-//! (cells cut in pieces by walls thinner than them, each piece a vertex) runs again with
-//! proportionally fewer samples, at most kExactCountPasses more times, so the count is the one asked
-//! (fewer samples make larger cells, which thin walls cut into more pieces: the count is aimed at again).
+//! RemeshParams::exactCount: a pass whose RDT has more vertices than this share over or under the
+//! count asked (cells cut in pieces by walls thinner than them, each piece a vertex; samples in no
+//! triangle on parts thinner than the cells) runs again with proportionally fewer or more samples,
+//! at most kExactCountPasses more times (larger cells are cut into more pieces: aimed at again).
 constexpr double kExactCountShare = 0.03;
 constexpr int kExactCountPasses = 3;
 
@@ -377,9 +377,7 @@ ThinPartsOutcome keepCountAskedFor(PassResult first, const PassInput& firstInput
     const int asked = firstInput.sampleCount;
     for (int pass = 0; pass < kExactCountPasses; ++pass) {
         const int got = out.pass.extracted.mesh.vertexCount();
-        // Only a pass over the count starts the passes; after one, a count under it is aimed at too.
-        const bool over = got > asked * (1 + kExactCountShare), under = got < asked * (1 - kExactCountShare);
-        if (!over && !(pass > 0 && under)) break;
+        if (std::abs(got - asked) <= asked * kExactCountShare) break;
         PassInput input = out.input;
         input.sampleCount = std::max(4, static_cast<int>(std::floor(double(input.sampleCount) * asked / got)));
         PassResult again;
