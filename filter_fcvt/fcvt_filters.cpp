@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "errors.h"
@@ -103,15 +104,16 @@ std::vector<ParamDef> parameters(FilterId filter, const MeshModel* current)
     return par.defs;
 }
 
-void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb)
+FilterOutput applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb, bool figures)
 {
-    FilterRun run(log);
+    FilterRun run(log, figures);
     switch (filter) {
     case kRemesh: run.applyRemesh(md, par, cb); break;
     case kField: run.applyField(md, par, cb); break;
     case kQuality: run.applyQuality(md, par, cb); break;
     default: throw FilterFailure("FCVT: unknown filter");
     }
+    return run.output();
 }
 
 QString unexpectedFailure(const std::exception* e)
@@ -122,10 +124,12 @@ QString unexpectedFailure(const std::exception* e)
                         : QString("FCVT: unknown error");
 }
 
-bool runFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb, QString& failure)
+bool runFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb, QString& failure,
+               FilterOutput* output)
 {
     try {
-        applyFilter(filter, md, par, log, cb);
+        FilterOutput figures = applyFilter(filter, md, par, log, cb, output != nullptr);
+        if (output != nullptr) *output = std::move(figures);
         return true;
     } catch (const FilterFailure& e) {
         failure = e.message();

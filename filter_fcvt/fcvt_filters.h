@@ -34,9 +34,11 @@ std::vector<ParamDef> parameters(FilterId filter, const MeshModel* current);
 //! 637 vertices came back with 1 073 vertices from the filter, 1 218 from the CLI.)
 double typedValue(float value);
 
-//! Runs `filter` on the document. Throws FilterFailure (bad parameters or input) or any other
-//! exception (a failure in the core); in both cases the document is as it was before.
-void applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb);
+//! Runs `filter` on the document and returns its figures (FilterOutput; with `figures` false
+//! only those that cost nothing extra). Throws FilterFailure (bad parameters or input) or any
+//! other exception (a failure in the core); in both cases the document is as it was before.
+FilterOutput applyFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb,
+                         bool figures = true);
 
 //! The message for an unexpected exception (anything but FilterFailure).
 QString unexpectedFailure(const std::exception* e);
@@ -46,7 +48,9 @@ QString unexpectedFailure(const std::exception* e);
 //! its MLException): true when the filter ran. Otherwise false, and `failure` holds the message
 //! as a log line (plainLogText), already logged as a warning; the glue reports it its MeshLab's
 //! way (2020.09: errorMessage, since meshlabserver prints the log but never errorMsg();
-//! 2022.02: an MLException).
-bool runFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb, QString& failure);
+//! 2022.02: an MLException). When it ran and `output` is given, `*output` holds its figures (the
+//! FilterPlugin glue returns them to MeshLab and pymeshlab; the 2020.09 glue passes none).
+bool runFilter(FilterId filter, MeshDocument& md, const ParamValues& par, FilterLog& log, Callback* cb, QString& failure,
+               FilterOutput* output = nullptr);
 
 }  // namespace fcvt_plugin

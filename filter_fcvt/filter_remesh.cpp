@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "errors.h"
@@ -298,7 +299,38 @@ bool FilterRun::remeshFcvt(MeshDocument& md, const fieldcvt::RemeshParams& param
                 .arg(num(wall, 3))
                 .arg(num(result.totalSeconds, 3))
                 .arg(num(std::max(0.0, wall - result.totalSeconds), 3)));
+    addRunFigures(result, wall);
     return true;
+}
+
+void FilterRun::addRunFigures(const fieldcvt::RemeshResult& r, double wallSeconds)
+{
+    // The top level of `fcvt remesh --report` (cli/command_remesh.cpp), its "time_s" object
+    // flattened: time_s_<stage> (a stage run twice counts both times), time_s_total the filter's
+    // whole time, from the layer to the new layer (the CLI's: from reading to writing).
+    FilterOutput& out = output_;
+    out.addInteger("vertices", r.mesh.vertexCount());
+    out.addInteger("faces", r.mesh.faceCount());
+    out.addReal("mean_edge_length", fieldcvt::meanEdgeLength(r.mesh));
+    out.addInteger("evaluations", r.evaluations);
+    out.addInteger("fcvt_iterations", r.fcvtIterations);
+    out.addInteger("threads_used", r.threads);
+    out.addInteger("optimisation_faces", r.optimisationFaces);
+    std::vector<std::pair<std::string, double>> times;
+    for (const fieldcvt::StageTime& t : r.stageTimes) {
+        auto it = std::find_if(times.begin(), times.end(), [&](const auto& s) { return s.first == t.stage; });
+        if (it == times.end())
+            times.emplace_back(t.stage, t.seconds);
+        else
+            it->second += t.seconds;
+    }
+    for (const auto& [stage, seconds] : times) out.addReal("time_s_" + stage, seconds);
+    out.addReal("time_s_total", wallSeconds);
+    // How many warnings the run logged (the core's "FCVT warning: ..." lines, the CLI report's
+    // "warnings", and the filter's own about the layer). A count, not the texts: pymeshlab's
+    // dict takes numbers, booleans and MeshLab's vectors and matrices, and drops a QString or a
+    // QStringList; the lines are in the log (pymeshlab.MeshSet(verbose=True) prints it).
+    out.addInteger("warnings", warnings_.size());
 }
 
 std::vector<char> FilterRun::selectedFaces(const MeshModel& input)

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <exception>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -35,6 +36,24 @@
 #include "working_frame.h"
 
 namespace fcvt_plugin {
+
+namespace {
+
+//! The Table 2 figures by the CLI report's keys (cli/report.cpp, metricsJson), distances apart.
+void addQualityFigures(const fieldcvt::QualityMetrics& m, FilterOutput& out)
+{
+    out.addReal("q_min", m.qMin);
+    out.addReal("q_avg", m.qAvg);
+    out.addReal("theta_min", m.thetaMin);
+    out.addReal("theta_min_avg", m.thetaMinAvg);
+    out.addReal("theta_max", m.thetaMax);
+    out.addReal("pct_lt30", m.pctLt30);
+    out.addReal("pct_gt90", m.pctGt90);
+    out.addReal("v6_pct", m.v6Pct);
+    out.addReal("boundary_v4_pct", m.boundaryV4Pct);  // left out on a closed mesh (NaN)
+}
+
+}  // namespace
 
 bool FilterRun::applyQuality(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb)
 {
@@ -173,6 +192,14 @@ bool FilterRun::computeRosyField(MeshDocument& md, const fieldcvt::FieldParams& 
                 .arg(num(stats.meanSegmentLength))
                 .arg(num(stats.meanEdgeLength))
                 .arg(fcvt_plugin::kLift));
+    // As `fcvt field` prints them: on the surface the field was computed on (the layer as the
+    // input check leaves it).
+    int indexSum = 0;
+    for (const fieldcvt::Singularity& s : singularities) indexSum += s.index;
+    output_.addInteger("singularities", static_cast<int>(singularities.size()));
+    output_.addInteger("index_sum", indexSum);
+    output_.addInteger("field_vertices", clean.vertexCount());
+    output_.addInteger("drawn_crosses", stats.drawnVertices);
     return true;
 }
 
@@ -203,10 +230,12 @@ bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorI
     const fieldcvt::QualityMetrics quality = fieldcvt::computeQuality(measured);
     const fieldcvt::TopologySummary topology = fieldcvt::computeTopology(measured);
     fieldcvt::DistanceMetrics distance;
+    double boundaryDistance = std::numeric_limits<double>::quiet_NaN();
     if (reference != nullptr) {
         if (cb != nullptr) cb(20, "FCVT: measuring distances");
         const fieldcvt::TriMesh ref = fcvt_plugin::toTriMesh(reference->cm);
         distance = fieldcvt::computeDistance(measured, ref, distanceSamples(measured, ref));
+        boundaryDistance = fieldcvt::boundaryDistance(measured, ref);  // NaN without open boundaries
     }
     // Measured before anything changes: a failure above leaves the layer as it was.
     QString colours;
@@ -229,11 +258,66 @@ bool FilterRun::qualityReport(MeshModel& mesh, MeshModel* reference, bool colorI
     }
     logInfo("FCVT quality topology: " + topologyText(topology));
     if (colorIrregular) logInfo("FCVT valence colours: " + colours);
+
+    // The same figures by name, as `fcvt metrics --json` has them (plus the topology).
+    FilterOutput& out = output_;
+    out.addInteger("vertices", quality.vertices);
+    out.addInteger("faces", quality.faces);
+    addQualityFigures(quality, out);
+    if (reference != nullptr) {
+        out.addReal("d_rms", distance.rms);
+        out.addReal("d_h", distance.hausdorff);
+        out.addReal("d_boundary", boundaryDistance);
+    }
+    out.addInteger("genus", topology.genus);
+    out.addInteger("boundary_loops", topology.boundaryLoops);
+    out.addInteger("components", topology.components);
+    out.addBoolean("manifold", topology.manifold());
+    out.addBoolean("orientable", topology.orientable);
+    int singularities = 0, indexSum = 0;
+    if (figures_ && layerFieldSingularities(mesh, measured, singularities, indexSum)) {
+        out.addInteger("singularities", singularities);
+        out.addInteger("index_sum", indexSum);
+        logInfo(QString("FCVT quality: the layer's field '%1': %2 singularities, index sum %3 (in sixths of a turn)")
+                    .arg(kRosyAttribute)
+                    .arg(singularities)
+                    .arg(indexSum));
+    }
     return true;
+}
+
+bool FilterRun::layerFieldSingularities(MeshModel& layer, const fieldcvt::TriMesh& measured, int& count, int& indexSum)
+{
+    auto rosy = vcg::tri::Allocator<CMeshO>::FindPerVertexAttribute<Point3m>(layer.cm, kRosyAttribute);
+    if (!vcg::tri::Allocator<CMeshO>::IsValidHandle<Point3m>(layer.cm, rosy)) return false;
+    std::vector<fieldcvt::Vec3> vectors;
+    vectors.reserve(measured.vertices.size());
+    for (auto vi = layer.cm.vert.begin(); vi != layer.cm.vert.end(); ++vi)
+        if (!vi->IsD()) vectors.push_back(toVec3(rosy[vi]));
+    if (vectors.size() != measured.vertices.size()) return false;
+    try {
+        // Each vector on its vertex's tangent plane; (nearly) normal or zero ones (vertices on no
+        // face) get the smooth field's direction there.
+        const fieldcvt::DirectionField field = fieldcvt::fieldFromVectors(measured, vectors);
+        const std::vector<fieldcvt::Singularity> found = fieldcvt::findSingularities(measured, field);
+        count = static_cast<int>(found.size());
+        indexSum = 0;
+        for (const fieldcvt::Singularity& s : found) indexSum += s.index;
+        return true;
+    } catch (const fieldcvt::InvalidInputError& e) {
+        logInfo(QString("FCVT quality: the layer's field '%1' is not counted: %2")
+                    .arg(kRosyAttribute, QString::fromStdString(e.what())));
+        return false;
+    }
 }
 
 void FilterRun::logInfo(const QString& line) { log_.info(plainLogText(line)); }
 
-void FilterRun::logWarning(const QString& line) { log_.warning(plainLogText(line)); }
+void FilterRun::logWarning(const QString& line)
+{
+    const QString text = plainLogText(line);
+    warnings_.push_back(text);
+    log_.warning(text);
+}
 
 }  // namespace fcvt_plugin

@@ -23,11 +23,15 @@ inline int distanceSamples(const fieldcvt::TriMesh& a, const fieldcvt::TriMesh& 
 //! One filter run: the typed bodies of the three filters, with the plugin's log.
 class FilterRun {
 public:
-    explicit FilterRun(FilterLog& log) : log_(log) {}
+    //! `figures`: the caller takes the run's figures (output()); what only they need (the quality
+    //! report's count of the layer's field singularities) is computed only then.
+    explicit FilterRun(FilterLog& log, bool figures = false) : log_(log), figures_(figures) {}
 
     bool applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
     bool applyField(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
     bool applyQuality(MeshDocument& md, const ParamValues& par, vcg::CallBackPos* cb);
+    //! The figures of the run that succeeded (fcvt_filters.h: applyFilter returns them).
+    const FilterOutput& output() const { return output_; }
 
 private:
     //! What the remeshing filter takes from the input layer besides the geometry.
@@ -63,6 +67,8 @@ private:
     //! new layer and its figures, the times.
     void logReport(const fieldcvt::RemeshResult& result, const fieldcvt::RemeshParams& run, const QString& layerName,
                    const QString& inputName);
+    //! The remeshing's figures (output_): the top level of the CLI's --report.
+    void addRunFigures(const fieldcvt::RemeshResult& r, double wallSeconds);
     //! The run's region line ("Remesh only selected faces").
     void logRegion(const fieldcvt::RegionRemeshResult& region);
     //! The selected faces of `input`; fails when there are none.
@@ -78,7 +84,14 @@ private:
     //! the file's triangulation of polygons unless `keepFaces` (face selection in use).
     fieldcvt::TriMesh surfaceOf(const MeshModel& layer, bool keepFaces = false);
 
+    //! The singularities of the layer's per-vertex field `rosy` on `measured` (its live vertices in
+    //! order), for the quality report's figures; false (nothing added) when the layer has none.
+    bool layerFieldSingularities(MeshModel& layer, const fieldcvt::TriMesh& measured, int& count, int& indexSum);
+
     FilterLog& log_;
+    bool figures_ = false;
+    FilterOutput output_;
+    QStringList warnings_;  //!< the warning lines logged so far, in order (the remeshing's "warnings")
 };
 
 }  // namespace fcvt_plugin

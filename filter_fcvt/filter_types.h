@@ -6,7 +6,10 @@
 #include <QString>
 #include <QStringList>
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "meshlab_types.h"
 
@@ -91,6 +94,31 @@ public:
     virtual ~FilterLog() = default;
     virtual void info(const QString& text) = 0;
     virtual void warning(const QString& text) = 0;
+};
+
+//! What a filter run gives back besides the document: its figures by name, in the order added.
+//! The FilterPlugin glue (MeshLab 2022.02 and later) returns them from applyFilter as the
+//! std::map<std::string, QVariant> that pymeshlab's apply_filter turns into its dict; MeshLab
+//! 2020.09's applyFilter returns a bool, and its glue leaves them unused. Names are pymeshlab's
+//! style and the CLI report's keys (lower case, '_'); a figure that was not measured (NaN) is
+//! left out, as the CLI's JSON has null there. Numbers and booleans only: pymeshlab's dict drops
+//! text (a QString) without a word.
+struct FilterOutput {
+    struct Value {
+        enum Kind { Integer, Real, Boolean };
+        std::string key;
+        Kind kind = Real;
+        double number = 0;  //!< Boolean: 0 / 1
+    };
+    std::vector<Value> values;
+
+    void addInteger(const std::string& key, long long v) { values.push_back({key, Value::Integer, double(v)}); }
+    //! Left out when not finite (not measured).
+    void addReal(const std::string& key, double v)
+    {
+        if (std::isfinite(v)) values.push_back({key, Value::Real, v});
+    }
+    void addBoolean(const std::string& key, bool v) { values.push_back({key, Value::Boolean, v ? 1.0 : 0.0}); }
 };
 
 //! A filter failed for a reason the user can fix: `what()` is the whole message. The glue

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite: installs what is missing, builds, runs the sanitizer and fuzzing step
 # (scripts/test-sanitizers.sh), then every CTest test (unit tests, CLI end-to-end and quality
-# bars, robustness corpus, meshlabserver end-to-end, the Debian package). Exits non-zero if
-# either part fails.
+# bars, robustness corpus, meshlabserver end-to-end, the Debian package, and label pymeshlab: the
+# plugin built for MeshLab 2025.07 and run in ../shared/pymeshlab, skipped without it). Exits
+# non-zero if either part fails.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$here/scripts/setup.sh"

@@ -2,6 +2,9 @@
 
 #include "../plugin_glue.h"
 
+#include <map>
+#include <string>
+
 namespace {
 
 // MeshLab 2023.12 renamed RichAbsPerc to RichPercentage (same constructor, same .mlx value);
@@ -59,6 +62,22 @@ private:
     const FilterPlugin& plugin_;
 };
 
+// The figures of a run as applyFilter's return value, which pymeshlab's apply_filter returns as
+// a dict (it converts int, double, bool and MeshLab's vector and matrix types).
+std::map<std::string, QVariant> toVariantMap(const fcvt_plugin::FilterOutput& output)
+{
+    using Value = fcvt_plugin::FilterOutput::Value;
+    std::map<std::string, QVariant> map;
+    for (const Value& v : output.values) {
+        switch (v.kind) {
+        case Value::Integer: map[v.key] = QVariant(int(v.number)); break;
+        case Value::Real: map[v.key] = QVariant(v.number); break;
+        case Value::Boolean: map[v.key] = QVariant(v.number != 0); break;
+        }
+    }
+    return map;
+}
+
 }  // namespace
 
 FilterFcvtPlugin::FilterFcvtPlugin()
@@ -101,11 +120,13 @@ std::map<std::string, QVariant> FilterFcvtPlugin::applyFilter(const QAction* a, 
 {
     // MeshLab 2022.02 reports a failed filter by the MLException it throws (the GUI shows its
     // text, pymeshlab raises it); anything else would end the application. The message also goes
-    // to the log, as in the 2020.09 plugin.
+    // to the log, as in the 2020.09 plugin. A run that succeeded returns its figures (pymeshlab's
+    // dict; MeshLab's GUI does not show them, its log has them).
     Log log(*this);
     const Values values(par, md);
     QString failure;
-    if (fcvt_plugin::runFilter(filterId(ID(a)), md, values, log, cb, failure)) return {};
+    fcvt_plugin::FilterOutput output;
+    if (fcvt_plugin::runFilter(filterId(ID(a)), md, values, log, cb, failure, &output)) return toVariantMap(output);
     throw MLException(failure);
 }
 
