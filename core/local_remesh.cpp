@@ -424,7 +424,9 @@ bool Remesher::tryFlip(int a, int b)
     const Vec3 o1 = triangleNormal(pa, pb, pc), o2 = triangleNormal(pb, pa, pd);
     const Vec3 n1 = triangleNormal(pa, pd, pc), n2 = triangleNormal(pd, pb, pc);
     // Neither new triangle turned over, and no sharper fold between them than there was.
-    const Vec3 o = o1.normalized() + o2.normalized();
+    // The two faces' normals weighted by area: a face flat to rounding (a split's midpoint left
+    // on its edge) has no direction of its own to hold the flip that mends it.
+    const Vec3 o = o1 + o2;
     if (n1.dot(o) <= 0 || n2.dot(o) <= 0) return false;
     if (unitDot(n1, n2) < std::min(unitDot(o1, o2), kFlipFoldCos)) return false;
     if (!flipImproves(a, b, c, d)) return false;
@@ -575,6 +577,7 @@ void Remesher::run(int iterations)
         compact();
     }
     smooth(false);  // every vertex that moved by a split and no smoothing since onto the surface
+    flipEdges();    // the last smoothing steps may have left a face flat that a flip mends
 }
 
 LocalRemeshResult Remesher::takeResult()
