@@ -304,9 +304,10 @@ TEST(Repair, SmallComponentFarFromTheRestIsKeptAndOneBesideItDropped)
 
 TEST(Repair, FarSmallComponentsAreKeptLargestFirstWithinTheirShareOfTheBudget)
 {
-    // 20 far patches of 1 to 1.95 expected samples each at 300 vertices: each is short of the 3
-    // samples a kept one gets by 1.05 to 2; the 2 % of 300 (6 samples) they may add keep the
-    // largest 5 (1.05 + 1.10 + 1.15 + 1.20 + 1.25 = 5.75).
+    // 20 far patches of 1 to 1.95 expected samples each at 300 vertices (0.33 to 0.65 % of the
+    // area): the 10 from 0.5 % on (RepairParams::keepAreaFraction, parts) are kept for their size;
+    // the other 10 are short of the 3 samples a kept one gets by 1.55 to 2; the 2 % of 300 (6
+    // samples) they may add keep the largest 3 (1.55 + 1.60 + 1.65 = 4.8; a fourth, 6.5).
     const TriMesh sphere = testmesh::icosphere(3);
     TriMesh input = sphere;
     // The total area T such that patch i's share of it is exactly (1 + 0.05 i) / 300: the
@@ -318,12 +319,14 @@ TEST(Repair, FarSmallComponentsAreKeptLargestFirstWithinTheirShareOfTheBudget)
         append(input, moved(testmesh::planeGrid(2, side), 1, {3.0 + 0.5 * i, 0, 0}));
     }
     const Repaired r = repairOf(input, 300);
-    EXPECT_EQ(r.repair.keptFarComponents, 5);
-    EXPECT_EQ(r.repair.droppedComponents, 15);
-    double nearest = 1e9;  // the kept patches are the last five (the largest), from x = 10.5 on
+    EXPECT_EQ(r.repair.keptSmallComponents, 10);
+    EXPECT_EQ(r.repair.keptFarComponents, 3);
+    EXPECT_EQ(r.repair.droppedComponents, 7);
+    double nearest = 1e9;  // the kept patches are the last thirteen (the largest), from x = 6.5 on
     for (const Vec3& p : r.mesh.vertices)
         if (p.x() > 2) nearest = std::min(nearest, p.x());
-    EXPECT_GE(nearest, 10.5);
+    EXPECT_GE(nearest, 6.5);
+    EXPECT_LT(nearest, 7.0);
 }
 
 TEST(Repair, BadInputIsLeftToTheStrictCheck)
