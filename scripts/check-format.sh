@@ -5,7 +5,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 command -v clang-format >/dev/null || { echo "check-format: clang-format is not installed (scripts/setup.sh)"; exit 77; }
-mapfile -t files < <(cd "$here" && find bench cli core filter_fcvt fuzz io tests \( -name '*.cpp' -o -name '*.h' \) | sort)
+mapfile -t files < <(cd "$here" && find bench cli core filter_fcvt frontend fuzz io python tests \( -name '*.cpp' -o -name '*.h' \) | sort)
 cd "$here"
 if [ "${1:-}" = "--fix" ]; then
   clang-format -i "${files[@]}"
