@@ -394,6 +394,37 @@ ThinPartsOutcome keepCountAskedFor(PassResult first, const PassInput& firstInput
     return out;
 }
 
+//! A first pass whose topology is the input's but whose cells thin walls cut into pieces (each
+//! piece a vertex: a plate thinner than the cells comes back with nearly a vertex per sample on
+//! each side) has more vertices than its topology needs: the passes of keepCountAskedFor, each
+//! kept only if its topology is still the input's and nothing is lost.
+ThinPartsOutcome fewerPiecesOfCells(PassOutcome first, const PassContext& context)
+{
+    ThinPartsOutcome out;
+    out.input = first.input;
+    const int asked = first.input.sampleCount;
+    int got = first.mesh().vertexCount();
+    out.pass = std::move(first.result);
+    for (int pass = 0; pass < kExactCountPasses && std::abs(got - asked) > asked * kExactCountShare; ++pass) {
+        PassInput input = out.input;
+        input.sampleCount = std::max(4, static_cast<int>(std::floor(double(input.sampleCount) * asked / got)));
+        PassOutcome again;
+        try {
+            again = takeOutcome(context, optimiseAndExtract(context, input), input);
+        } catch (const SolverError&) {
+            break;
+        }
+        const int count = again.mesh().vertexCount();
+        if (again.mesh().faces.empty() || thinPartsMayMend(again.topology, context.surface.inputTopology) ||
+            !again.lost.points.empty() || std::abs(count - asked) >= std::abs(got - asked))
+            break;
+        out.pass = std::move(again.result);
+        out.input = input;
+        got = count;
+    }
+    return out;
+}
+
 }  // namespace
 
 ThinPartsOutcome remeshThinPartsAgain(PassResult first, const PassInput& firstInput, const PassContext& context)
@@ -408,12 +439,8 @@ ThinPartsOutcome remeshThinPartsAgain(PassResult first, const PassInput& firstIn
         return out;
     }
     PassOutcome measured = takeOutcome(context, std::move(first), firstInput);  // topology and lost surface, once
-    if (!thinPartsMayMend(measured.topology, context.surface.inputTopology) && measured.lost.points.empty()) {
-        ThinPartsOutcome out;
-        out.pass = std::move(measured.result);
-        out.input = firstInput;
-        return out;
-    }
+    if (!thinPartsMayMend(measured.topology, context.surface.inputTopology) && measured.lost.points.empty())
+        return fewerPiecesOfCells(std::move(measured), context);
     ThinPartPasses passes(context, std::move(measured));
     passes.runAll();
     return passes.finish();
