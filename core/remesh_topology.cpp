@@ -3,9 +3,11 @@
 // local operations on the surface instead (local_remesh.h), which keep it by construction.
 #include "boundary.h"
 #include "closest_point.h"
+#include "errors.h"
 #include "local_remesh.h"
 #include "mesh_edges.h"
 #include "metrics.h"
+#include "remesh_limits.h"
 #include "remesh_stages.h"
 #include "thin_parts.h"
 
@@ -195,6 +197,31 @@ std::vector<double> targetLengths(const PassContext& context, const PassInput& p
     return length;
 }
 
+//! The local remeshing's shells are given up (the triangulation's pieces kept, with a warning)
+//! when they would need more vertices than this times the samples, or this floor, or the count
+//! limit: a face 1e30 long at the working scale would be split into as many.
+constexpr double kLocalVertexFactor = 50;
+constexpr double kLocalVertexFloor = 10000;
+
+//! About how many vertices the local remeshing makes of the selected faces: their area over an
+//! equilateral triangle's per vertex at their target length, or, on a sliver, its longest edge over
+//! the length (the vertices along it).
+double localVertexEstimate(const TriMesh& surface, const std::vector<char>& selected, const std::vector<double>& lengths)
+{
+    double estimate = 0;
+    for (int f = 0; f < surface.faceCount(); ++f) {
+        if (!selected[f]) continue;
+        const Face& t = surface.faces[f];
+        double longest = 0;
+        for (int k = 0; k < 3; ++k)
+            longest = std::max(longest, (surface.vertices[t[(k + 1) % 3]] - surface.vertices[t[k]]).norm());
+        const double l = lengths[f];
+        estimate += std::max(2 * faceArea(surface, f) / (std::sqrt(3.0) * l * l), longest / l);
+        if (!std::isfinite(estimate)) return estimate;
+    }
+    return estimate;
+}
+
 std::string problemWords(unsigned problems)
 {
     std::string words;
@@ -293,12 +320,29 @@ TopologyKept keepTopology(ExtractedMesh extracted, const PassInput& pass, const 
         }
         std::vector<char> selected(surface.faceCount(), 0);
         for (int f = 0; f < surface.faceCount(); ++f) selected[f] = remeshed[input.ofFace[f]];
-        LocalRemeshInput local{surface,
-                               *context.tree,
-                               selected,
-                               context.surface.features.edges,
-                               context.surface.features.corners,
-                               targetLengths(context, pass, selected)};
+        std::vector<double> lengths = targetLengths(context, pass, selected);
+        const double needed = localVertexEstimate(surface, selected, lengths);
+        const double limit =
+            std::min<double>(kMaxVertexCount, std::max(kLocalVertexFloor, kLocalVertexFactor * pass.sampleCount));
+        if (needed > limit) {
+            if (extracted.mesh.faces.empty())
+                throw SolverError(std::to_string(pass.sampleCount) +
+                                  " vertices are too few for this surface: they form no triangle on it, and remeshing it "
+                                  "by local operations would take too many (faces far longer than the edge length?); use "
+                                  "more vertices");
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "topology not kept on %d shells (%s): remeshing them by local operations would need about "
+                          "%.3g vertices, over the limit of %.3g for this count (faces far longer than the edge length?)",
+                          out.report.shells, problemWords(all).c_str(), needed, limit);
+            out.warning = text;
+            out.report = {};
+            out.extracted = std::move(extracted);
+            return;
+        }
+        LocalRemeshInput local{
+            surface,           *context.tree, selected, context.surface.features.edges, context.surface.features.corners,
+            std::move(lengths)};
         LocalRemeshResult made = remeshLocally(local, LocalRemeshParams{});
         out.report.vertices = made.mesh.vertexCount();
         for (int f = 0; f < surface.faceCount(); ++f) out.report.faces += selected[f];
