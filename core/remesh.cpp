@@ -122,6 +122,8 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
     if (!std::isfinite(p.gradation) || p.gradation < 0) fail(names.gradation, "a finite number >= 0", number(p.gradation));
     // Settings no front end offers: the core's words.
     if (p.boundaryIterations < 0) throw InvalidInputError("border iteration count must be >= 0");
+    if (p.fieldSmoothingIterations < 0 || p.latticeIterations < 0)
+        throw InvalidInputError("field and lattice smoothing iteration counts must be >= 0");
     if (p.optimisationFacesPerSample < 0) throw InvalidInputError("optimisation faces per sample must be >= 0");
     if (p.optimisationFacesCap < 0) throw InvalidInputError("optimisation face cap must be >= 0");
     if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");

@@ -41,6 +41,11 @@ struct RemeshParams {
     //! Lloyd steps (>= 0) that put the samples of cells meeting the border or a feature line on it (a
     //! 1D CVT along the curve) and one on each feature corner (§5); they stay fixed in the FCVT steps.
     int boundaryIterations = 10;
+    //! Gauss–Seidel sweeps of the extrinsic field per hierarchy level (FieldParams::smoothingIterations), >= 0.
+    int fieldSmoothingIterations = 20;
+    //! Gauss–Seidel sweeps of the lattice start's position field per hierarchy level
+    //! (LatticeParams::iterations), >= 0.
+    int latticeIterations = 4;
     FieldSource fieldSource = FieldSource::Extrinsic;  //!< the 6-RoSy field E_field aligns to
     std::vector<Vec3> userDirections;                  //!< FieldSource::User: a vector per input vertex (made tangent)
     //! Starting samples instead of random area-uniform ones: at least 4, finite; their number replaces

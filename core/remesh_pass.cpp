@@ -51,6 +51,7 @@ InitialSamples placeSamples(const PassContext& context, const OptimisationPlan& 
             // The field-aligned lattice (lattice.h) on the optimisation surface, put on it.
             LatticeParams lattice;
             lattice.seed = p.seed;
+            lattice.iterations = p.latticeIterations;
             std::vector<int> faces;  // each point's face: the hint of its closest-point query
             out.lattice = std::make_unique<LatticeReport>();
             out.seeds = latticeSamples(surface, context.field.field, pass.sampleCount, lattice, out.lattice.get(),

@@ -306,6 +306,7 @@ FieldStage computeFieldStage(const TriMesh& input, const OptimisationSurface& su
             FieldParams fieldParams;
             fieldParams.source = p.fieldSource;
             fieldParams.seed = p.seed;
+            fieldParams.smoothingIterations = p.fieldSmoothingIterations;
             // The field follows the same creases the samples are snapped to (§5).
             if (p.featureAngleDegrees > 0) fieldParams.sharpAngle = p.featureAngleDegrees;
             out.field = computeField(mesh, fieldParams, nullptr, plan.latticeStart ? &out.hierarchy : nullptr);

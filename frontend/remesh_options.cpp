@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "remesh_limits.h"
+#include "remesh_presets.h"
 
 namespace fieldcvt::frontend {
 
@@ -9,7 +10,7 @@ const OptionNames& remeshOptionNames()
 {
     static const OptionNames names{
         {"vertices", "target-length", "field", "lambda", "lloyd-iterations", "cvt-iterations", "fcvt-iterations", "seed",
-         "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region", "texture"},
+         "threads", "time-limit", "report", "feature-angle", "adaptive", "gradation", "region", "texture", "preset"},
         {"quiet", "help", "no-valence", "no-repair", "keep-holes", "exact-count", "full-surface", "random-start", "no-texture",
          "overwrite"}};
     return names;
@@ -75,6 +76,14 @@ RemeshParams paramsFrom(const Arguments& a)
             "remesh needs exactly one of --vertices N (the target vertex count) and --target-length L "
             "(the target edge length)");
     RemeshParams p;
+    // The preset first: every other option overrides what it sets.
+    if (const auto preset = a.text("preset")) {
+        try {
+            applyPreset(p, presetFromName(*preset));
+        } catch (const InvalidInputError&) {
+            throw UsageError("--preset must be fast, default or quality, got " + quoteInput(*preset));
+        }
+    }
     p.vertexCount = a.saturatedInt("vertices", p.vertexCount);
     p.fieldSource = fieldOption(a, p.fieldSource, true);
     p.lambda = a.number("lambda", p.lambda);

@@ -138,7 +138,8 @@ const char* const remeshDoc = R"doc(remesh(V, F, *, progress=None, region=None, 
 Remeshes the triangle mesh (V: n x 3 coordinates, F: m x 3 vertex indices) as
 `fcvt remesh IN OUT` does. Every option of `fcvt remesh` is a keyword: `-` becomes `_`,
 flags are bools, `lambda` is `lambda_` (e.g. vertices=5000, target_length=0.01, seed=1,
-lambda_=0, feature_angle=45, no_valence=True); exactly one of vertices and target_length.
+lambda_=0, feature_angle=45, no_valence=True, preset="fast"); exactly one of vertices and
+target_length.
 region: one value per face, non-zero = remeshed (the CLI's --region). rosy: n x 3, the field
 of field='user'. progress: callable(stage: str, percent: int), called as the run goes.
 Returns a Result: vertices (float64), faces (int32), normals and rosy (the field at the

@@ -34,6 +34,7 @@ FILE_LAYERS = [
     ("core/remesh_params.h", "contract"),
     ("core/remesh_limits.*", "contract"),
     ("core/remesh_result.h", "contract"),
+    ("core/remesh_presets.h", "contract"),
     ("core/*_params.h", "base"),
     # The orchestration: remesh() running the stages, and the selection-only remeshing over it.
     ("core/remesh*", "orchestration"),
