@@ -46,7 +46,14 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"adaptive", p.density == DensitySource::Curvature ? "curvature" : "none"},
             {"gradation", p.gradation},
             {"repair", p.repair},
-            {"optimisation_faces_per_sample", p.optimisationFacesPerSample}};
+            {"optimisation_faces_per_sample", p.optimisationFacesPerSample},
+            {"boundary_iterations", p.boundaryIterations},
+            {"field_smoothing_iterations", p.fieldSmoothingIterations},
+            {"lattice_iterations", p.latticeIterations},
+            {"valence_rounds", p.valence.maxRounds},
+            {"valence_look_ahead", p.valence.lookAheadDepth},
+            {"valence_relax_iterations", p.valence.relaxIterations},
+            {"valence_local_smoothing", p.valence.localSmoothing}};
 }
 
 //! The --report JSON of one run.

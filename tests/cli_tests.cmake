@@ -164,3 +164,10 @@ add_test(NAME cli_side_files
   COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_side_files.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}/textured
           ${FCVT_CLI_WORK}/side_files)
 set_tests_properties(cli_side_files PROPERTIES LABELS "cli" TIMEOUT 900)
+
+# Presets (issue 54): the same bytes on 1, 2 and 3 threads each, the settings each names, options
+# override them, fast's quality on bunny 5000 against the peers' figures.
+add_test(NAME cli_presets
+  COMMAND Python3::Interpreter ${FCVT_CLI_SCRIPTS}/check_presets.py $<TARGET_FILE:fcvt> ${FCVT_RESOURCES}
+          ${FCVT_CLI_WORK}/presets)
+set_tests_properties(cli_presets PROPERTIES LABELS "cli;slow" TIMEOUT 1200)
