@@ -6,6 +6,8 @@ of their output's vertex count over N until it is within 3 % of N (issue 35 item
 size; at the README's L they give 16-63 % more vertices).
 Whole commands, one after the other, medians of --repeat alternating rounds; every output
 measured by `fcvt metrics OUT --ref IN` (Q_avg / theta_min / %theta<30 / V6% / d_H % / loops).
+FCVT runs twice in each round: with the default preset and with --preset fast (column "fast"),
+and the last table checks fast against the faster of pmp and CGAL (issue 54 item 1).
 
   python3 bench/peers.py BUILD/cli/fcvt [--threads 2] [--repeat 5] [MESH:N ...]
 """
@@ -60,6 +62,39 @@ def matched_length(cmd_for, out, n, length, tries=8):
     return best
 
 
+def fast_verdict(row, n, med, measured):
+    """One line of the fast-preset check, or None without both pmp and CGAL."""
+    peers = [k for k in ("pmp", "CGAL") if k in med]
+    if len(peers) < 2:
+        return None
+    faster = min(peers, key=lambda k: med[k])
+    fast = measured["fast"]
+
+    def best(key, larger_is_better=True):
+        values = [measured[k].get(key) for k in peers if isinstance(measured[k].get(key), float)]
+        return (max(values) if larger_is_better else min(values)) if values else None
+
+    def mark(ok):
+        return "yes" if ok else "**no**"
+    cells, oks = [], []
+    ratio = med["fast"] / med[faster]
+    oks.append(ratio <= 1.0)
+    cells.append(f"{med['fast']:.2f} / {med[faster]:.2f} ({faster}) = {ratio:.2f} {mark(oks[-1])}")
+    for key, limit in (("q_avg", best("q_avg")), ("v6_pct", best("v6_pct"))):
+        oks.append(limit is None or fast.get(key, 0) >= limit)
+        cells.append(f"{fast.get(key, 0):.3g} vs {limit if limit is None else f'{limit:.3g}'} {mark(oks[-1])}")
+    theta = min(30.0, best("theta_min") or 0.0)
+    oks.append(fast.get("theta_min", 0) >= theta)
+    cells.append(f"{fast.get('theta_min', 0):.1f} vs {theta:.1f} {mark(oks[-1])}")
+    dh = best("d_h", larger_is_better=False)
+    oks.append(dh is None or fast.get("d_h", 1) <= 1.1 * dh)
+    cells.append(f"{100 * fast.get('d_h', 1):.2f} vs 1.1 × {100 * dh:.2f} {mark(oks[-1])}")
+    count = int(fast.get("vertices", 0))
+    oks.append(abs(count - n) <= 0.03 * n)
+    cells.append(f"{count} {mark(oks[-1])}")
+    return f"| {row} | " + " | ".join(cells) + f" | {mark(all(oks))} |"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("fcvt")
@@ -73,10 +108,12 @@ def main():
     print(f"# FCVT {a.threads} threads; peers: {', '.join(tools) or 'none found'}; medians of {a.repeat}")
     print("quality: Q_avg / θ_min / %θ<30° / V6% / d_H % / boundary loops (`fcvt metrics OUT --ref IN`); V: output vertices")
     print()
-    head = "| mesh, N | FCVT s | " + " | ".join(f"{k} s | FCVT / {k}" for k in tools) + " | FCVT quality, V | "
+    head = "| mesh, N | FCVT s | fast s | " + " | ".join(f"{k} s | FCVT / {k}" for k in tools)
+    head += " | FCVT quality, V | fast quality, V | "
     head += " | ".join(f"{k} quality, V" for k in tools) + " |"
     print(head)
     print("|" + "---|" * (head.count("|") - 1))
+    verdicts = []
     with tempfile.TemporaryDirectory() as work:
         for spec in a.rows or DEFAULT_ROWS:
             path, n = spec.rsplit(":", 1)
@@ -89,7 +126,10 @@ def main():
             length = math.sqrt(2 * obj_area(obj) / (math.sqrt(3) * int(n)))
             out = {k: os.path.join(work, k + ".obj") for k in tools}
             out["FCVT"] = os.path.join(work, "fcvt.ply")
-            cmds = {"FCVT": [a.fcvt, "remesh", path, out["FCVT"], "--vertices", n, "--threads", str(a.threads), "--quiet"]}
+            out["fast"] = os.path.join(work, "fast.ply")
+            cmds = {"FCVT": [a.fcvt, "remesh", path, out["FCVT"], "--vertices", n, "--threads", str(a.threads), "--quiet"],
+                    "fast": [a.fcvt, "remesh", path, out["fast"], "--vertices", n, "--threads", str(a.threads), "--quiet",
+                             "--preset", "fast"]}
             if "IM" in tools:
                 cmds["IM"] = [tools["IM"], obj, "-o", out["IM"], "-r", "6", "-p", "6", "-v", n, "-d", "-t", str(a.threads)]
             for k in ("pmp", "CGAL"):
@@ -103,13 +143,23 @@ def main():
                 for k, cmd in cmds.items():
                     times[k].append(timed(cmd)[0])
             med = {k: statistics.median(t) for k, t in times.items()}
-            line = f"| {os.path.basename(path)} {n} | {med['FCVT']:.2f} | "
+            line = f"| {os.path.basename(path)} {n} | {med['FCVT']:.2f} | {med['fast']:.2f} | "
             line += " | ".join(f"{med[k]:.2f} | {med['FCVT'] / med[k]:.2f}" for k in tools) + " | "
-            cells = []
-            for k in ["FCVT"] + list(tools):
-                m = metrics(a.fcvt, out[k], path)
+            cells, measured = [], {}
+            for k in ["FCVT", "fast"] + list(tools):
+                measured[k] = m = metrics(a.fcvt, out[k], path)
                 cells.append(f"{quality(m)}, {int(m.get('vertices', 0))}")
             print(line + " | ".join(cells) + " |", flush=True)
+            verdicts.append(fast_verdict(f"{os.path.basename(path)} {n}", int(n), med, measured))
+    if verdicts and verdicts[0] is not None:
+        print()
+        print("fast against the faster of pmp and CGAL (time) and the better of the two (quality; θ_min against "
+              "min(30°, theirs), d_H against 1.1 times theirs):")
+        print()
+        print("| mesh, N | fast s / peer s | Q_avg | V6 | θ_min | d_H | V within 3 % | all |")
+        print("|---|---|---|---|---|---|---|---|")
+        for v in verdicts:
+            print(v)
 
 
 if __name__ == "__main__":

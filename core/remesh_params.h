@@ -73,6 +73,9 @@ struct RemeshParams {
     //! every face: this makes a dense scan cost what a coarse model costs.
     int optimisationFacesPerSample = 4;
     int optimisationFacesCap = 200000;  //!< ... but at most this many faces (>= 0), never under 2 a sample
+    //! Inputs of at least twice this many faces are simplified in blocks of about this many faces, in
+    //! parallel (SimplifyParams::blockFaces; the blocks depend on the input only), >= 0; 0 = one pass.
+    int simplifyBlockFaces = 250000;
     //! §4.4: after the RDT, flips / collapses / splits that lower Σ(d(v) − o(v))², then a relaxation on
     //! the fixed connectivity (valence.h).
     bool valenceOptimization = true;

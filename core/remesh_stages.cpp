@@ -220,6 +220,7 @@ OptimisationSurface chooseOptimisationSurface(const PreparedSurface& prepared, F
             // 5 % of the output's edge length (about 1.07 at the working scale): the coarse
             // surface is within that of the input, far inside the output's own sag.
             simplify.maxError = 0.05;
+            simplify.blockFaces = params.simplifyBlockFaces;
             simplify.locked.assign(surface.vertices.size(), 0);
             for (const auto& [a, b] : out.features.edges) simplify.locked[a] = simplify.locked[b] = 1;
             // Both are serial: the input's closest-point tree (for projectOnInput) and its

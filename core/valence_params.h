@@ -29,6 +29,9 @@ struct ValenceParams {
     //! RemeshParams::lambda (E_field against E_CVT at mean cell area 1); 0 = smoothing only. 0.01
     //! brings the mean direction distance back to about its value before the operations.
     double fieldWeight = 0.01;
+    //! Rounds of the last step, which moves the vertices of the faces farthest from the input (the
+    //! largest sags, within 5 % of the largest) closer to it (0 = off): d_H's own repair.
+    int sagRepairRounds = 4;
 };
 
 struct ValenceStats {

@@ -53,7 +53,9 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"valence_rounds", p.valence.maxRounds},
             {"valence_look_ahead", p.valence.lookAheadDepth},
             {"valence_relax_iterations", p.valence.relaxIterations},
-            {"valence_local_smoothing", p.valence.localSmoothing}};
+            {"valence_local_smoothing", p.valence.localSmoothing},
+            {"valence_sag_repair_rounds", p.valence.sagRepairRounds},
+            {"simplify_block_faces", p.simplifyBlockFaces}};
 }
 
 //! The --report JSON of one run.

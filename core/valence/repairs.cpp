@@ -274,7 +274,7 @@ void lowerLargestSags(ValenceMesh& mesh, SagGuard& sag, const ValenceParams& par
     std::vector<double> bound(faceCount, -1.0);
     std::vector<int> faces, verts;
     std::vector<int> movedVertices;  // by the last round
-    for (int round = 0; round < kSagRepairRounds; ++round) {
+    for (int round = 0; round < params.sagRepairRounds; ++round) {
         // After the first round only the faces of the vertices it moved are walked again (a
         // face whose corners and their closest points are as they were has the same bound).
         if (round == 0) {

@@ -41,8 +41,7 @@ constexpr double kAngleRepairStep = 0.1;
 constexpr double kAngleRepairDrift = 0.3;
 //! ... and at most this many steps for the angle repair (each accepted one raises the angle).
 constexpr int kAngleRepairMaxSteps = 64;
-//! Sag repair: rounds, the largest sag measured again before each.
-constexpr int kSagRepairRounds = 4;
+//! Sag repair (rounds: ValenceParams::sagRepairRounds, the largest sag measured again before each).
 //! The faces whose sag is within this fraction of the largest are repaired, down to the band's lower edge.
 constexpr double kSagRepairBand = 0.05;
 //! At most this many faces per round.
