@@ -128,8 +128,7 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
     if (p.optimisationFacesCap < 0) throw InvalidInputError("optimisation face cap must be >= 0");
     if (p.simplifyBlockFaces < 0) throw InvalidInputError("simplification block size must be >= 0");
     if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");
-    if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0 ||
-        p.valence.sagRepairRounds < 0)
+    if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0 || p.valence.sagRepairRounds < 0)
         throw InvalidInputError("valence optimisation step counts must be >= 0");
     if (p.valence.borderWeight < 1) throw InvalidInputError("valence optimisation border weight must be >= 1");
 }
