@@ -124,6 +124,7 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
     if (p.boundaryIterations < 0) throw InvalidInputError("border iteration count must be >= 0");
     if (p.fieldSmoothingIterations < 0 || p.latticeIterations < 0)
         throw InvalidInputError("field and lattice smoothing iteration counts must be >= 0");
+    if (p.latticePasses < 1) throw InvalidInputError("lattice pass count must be >= 1");
     if (p.optimisationFacesPerSample < 0) throw InvalidInputError("optimisation faces per sample must be >= 0");
     if (p.optimisationFacesCap < 0) throw InvalidInputError("optimisation face cap must be >= 0");
     if (p.simplifyBlockFaces < 0) throw InvalidInputError("simplification block size must be >= 0");

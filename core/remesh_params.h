@@ -46,6 +46,9 @@ struct RemeshParams {
     //! Gauss–Seidel sweeps of the lattice start's position field per hierarchy level
     //! (LatticeParams::iterations), >= 0.
     int latticeIterations = 4;
+    //! Lattices solved at most (LatticeParams::maxPasses, >= 1), each with a spacing corrected
+    //! towards vertexCount while the last is over 0.5 % off it; the closest is kept.
+    int latticePasses = 3;
     FieldSource fieldSource = FieldSource::Extrinsic;  //!< the 6-RoSy field E_field aligns to
     std::vector<Vec3> userDirections;                  //!< FieldSource::User: a vector per input vertex (made tangent)
     //! Starting samples instead of random area-uniform ones: at least 4, finite; their number replaces

@@ -52,6 +52,7 @@ InitialSamples placeSamples(const PassContext& context, const OptimisationPlan& 
             LatticeParams lattice;
             lattice.seed = p.seed;
             lattice.iterations = p.latticeIterations;
+            lattice.maxPasses = p.latticePasses;
             std::vector<int> faces;  // each point's face: the hint of its closest-point query
             out.lattice = std::make_unique<LatticeReport>();
             out.seeds = latticeSamples(surface, context.field.field, pass.sampleCount, lattice, out.lattice.get(),

@@ -56,6 +56,7 @@ inline void applyPreset(RemeshParams& params, Preset preset)
     params.boundaryIterations = defaults.boundaryIterations;
     params.fieldSmoothingIterations = defaults.fieldSmoothingIterations;
     params.latticeIterations = defaults.latticeIterations;
+    params.latticePasses = defaults.latticePasses;
     params.optimisationFacesPerSample = defaults.optimisationFacesPerSample;
     params.simplifyBlockFaces = defaults.simplifyBlockFaces;
     params.valence = defaults.valence;
@@ -67,6 +68,7 @@ inline void applyPreset(RemeshParams& params, Preset preset)
         params.boundaryIterations = 3;
         params.fieldSmoothingIterations = 8;
         params.latticeIterations = 2;
+        params.latticePasses = 2;
         params.optimisationFacesPerSample = 2;  // the least a sample (optimisationFaceTarget)
         params.simplifyBlockFaces = 20000;      // in parallel from 40 000 faces on
         params.valence.maxRounds = 10;

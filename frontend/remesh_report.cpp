@@ -50,6 +50,7 @@ nlohmann::ordered_json paramsJson(const RemeshParams& p)
             {"boundary_iterations", p.boundaryIterations},
             {"field_smoothing_iterations", p.fieldSmoothingIterations},
             {"lattice_iterations", p.latticeIterations},
+            {"lattice_passes", p.latticePasses},
             {"valence_rounds", p.valence.maxRounds},
             {"valence_look_ahead", p.valence.lookAheadDepth},
             {"valence_relax_iterations", p.valence.relaxIterations},
