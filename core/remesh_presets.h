@@ -73,7 +73,7 @@ inline void applyPreset(RemeshParams& params, Preset preset)
         params.simplifyBlockFaces = 20000;      // in parallel from 40 000 faces on
         params.valence.maxRounds = 10;
         params.valence.lookAheadDepth = 2;
-        params.valence.relaxIterations = 5;
+        params.valence.relaxIterations = 3;
         params.valence.localSmoothing = 1;
         params.valence.sagRepairRounds = 0;
         break;

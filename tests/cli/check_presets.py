@@ -38,7 +38,7 @@ check(not filecmp.cmp(outputs["fast"], outputs["default"], shallow=False), "fast
 expected = {
     "fast": {"cvt_iterations": 0, "fcvt_iterations": 5, "large_run_fcvt_iterations": 5, "boundary_iterations": 3,
              "field_smoothing_iterations": 8, "lattice_iterations": 2, "lattice_passes": 2, "optimisation_faces_per_sample": 2,
-             "valence_rounds": 10, "valence_look_ahead": 2, "valence_relax_iterations": 5, "valence_local_smoothing": 1,
+             "valence_rounds": 10, "valence_look_ahead": 2, "valence_relax_iterations": 3, "valence_local_smoothing": 1,
              "valence_sag_repair_rounds": 0, "simplify_block_faces": 20000},
     "default": {"lloyd_iterations": 10, "lattice_lloyd_iterations": 0, "cvt_iterations": 10, "fcvt_iterations": 40,
                 "large_run_fcvt_iterations": 20, "boundary_iterations": 10, "field_smoothing_iterations": 20,
