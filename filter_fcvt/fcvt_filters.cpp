@@ -36,8 +36,8 @@ QString filterInfo(FilterId filter)
     case kRemesh:
         // Kept to one line: MeshLab shows it above the parameters, and Qt gives the dialog at
         // most 2/3 of the screen's height (682 pixels at 1280x1024), below which MeshLab 2020.09
-        // clips the last row (17 rows since exactCount). What each parameter does is in its
-        // tooltip (the Help button).
+        // clips the last row (17 rows since exactCount; 18 since preset, 702 pixels where the CTest
+        // measures, docs/meshlab.md). What each parameter does is in its tooltip (the Help button).
         return "<b>Field-Aligned Isotropic Surface Remeshing</b> into a new layer.";
     case kField:
         return "Computes a 6-way rotationally symmetric direction field on the current mesh: the "

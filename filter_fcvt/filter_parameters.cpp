@@ -147,6 +147,15 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
                                        "and handle is kept; the log says how many vertices were added "
                                        "and why. Checked: the vertex count asked for is kept and the "
                                        "topology may be lost (the log warns).")));
+        // The core's presets (the CLI's --preset). A dialog always has a value, so CVT and FCVT
+        // iterations at their defaults mean "as the preset says" (applyRemesh).
+        par.addParam(advanced(RichEnum(kPreset, kDefaultPresetIndex, presetLabels(), parameterLabel(kPreset),
+                                       QString("The optimiser's schedule (the CLI's --preset): fast, about half "
+                                               "the default's time, the mesh as regular; quality, the paper's "
+                                               "long schedule. CVT or FCVT iterations other than %1 / %2 "
+                                               "override it.")
+                                           .arg(defaults.cvtIterations)
+                                           .arg(defaults.fcvtIterations))));
         break;
     }
     case kField: {

@@ -12,6 +12,7 @@
 #include "filter_types.h"
 #include "field.h"
 #include "remesh.h"
+#include "remesh_presets.h"
 
 namespace fcvt_plugin {
 
@@ -47,6 +48,13 @@ inline bool boolParam(const ParamValues& par, const char* key, bool fallback)
     return par.hasParameter(key) ? par.getBool(key) : fallback;
 }
 
+// An enum a script may lack: its index (any integer: MeshLab does not check the range), or
+// `fallback`.
+inline int enumParam(const ParamValues& par, const char* key, int fallback)
+{
+    return par.hasParameter(key) ? par.getEnum(key) : fallback;
+}
+
 inline double floatParam(const ParamValues& par, const char* key, double fallback)
 {
     return par.hasParameter(key) ? double(par.getFloat(key)) : fallback;
@@ -59,6 +67,19 @@ inline int densityChoice(const ParamValues& par)
     if (!par.hasParameter(kAdaptive)) return kDensityUniform;
     if (par.isBool(kAdaptive)) return par.getBool(kAdaptive) ? kDensityVertexQuality : kDensityUniform;
     return par.getEnum(kAdaptive);
+}
+
+// The preset enum (index = value in .mlx scripts, frozen): fieldcvt::Preset's order, labelled
+// with presetName (the CLI's --preset values).
+constexpr fieldcvt::Preset kPresets[] = {fieldcvt::Preset::Fast, fieldcvt::Preset::Default, fieldcvt::Preset::Quality};
+constexpr int kPresetCount = int(std::size(kPresets));
+constexpr int kDefaultPresetIndex = 1;
+static_assert(kPresets[kDefaultPresetIndex] == fieldcvt::Preset::Default);
+inline QStringList presetLabels()
+{
+    QStringList labels;
+    for (fieldcvt::Preset p : kPresets) labels << fieldcvt::presetName(p);
+    return labels;
 }
 
 // The fieldSource enum: index in the RichEnum (the value stored in .mlx scripts, frozen) ->

@@ -68,14 +68,20 @@ bool FilterRun::applyRemesh(MeshDocument& md, const ParamValues& par, vcg::CallB
     const fieldcvt::RemeshParams defaults;
     const double featureAngle = floatParam(par, kFeatureAngle, defaults.featureAngleDegrees);
 
+    // The preset first, as the CLI's --preset; the values below override it.
+    const int preset = enumParam(par, kPreset, kDefaultPresetIndex);
+    if (preset < 0 || preset >= kPresetCount)
+        return fail(
+            QString("FCVT: %1 must be 0 (fast), 1 (default) or 2 (quality), got %2").arg(parameterName(kPreset)).arg(preset));
     fieldcvt::RemeshParams params;
+    fieldcvt::applyPreset(params, kPresets[preset]);
     params.vertexCount = vertexCount;
     params.lambda = lambda;
-    params.cvtIterations = cvtIterations;
-    params.fcvtIterations = fcvtIterations;
-    // As the CLI: the default stands for "40, fewer on a large run" (RemeshParams::
-    // largeRunFcvtIterations); any other value is used at every size, as --fcvt-iterations is.
-    if (fcvtIterations != defaults.fcvtIterations) params.largeRunFcvtIterations = fcvtIterations;
+    // A dialog always has a value: the iterations at RemeshParams' defaults mean "as the preset
+    // says" (the default preset: FCVT 40, fewer on a large run, RemeshParams::
+    // largeRunFcvtIterations); any other value is used, FCVT at every size, as --fcvt-iterations is.
+    if (cvtIterations != defaults.cvtIterations) params.cvtIterations = cvtIterations;
+    if (fcvtIterations != defaults.fcvtIterations) params.fcvtIterations = params.largeRunFcvtIterations = fcvtIterations;
     params.fieldSource = kFieldSources[fieldSource].source;
     params.seed = static_cast<std::uint64_t>(seed);
     params.valenceOptimization = boolParam(par, kValenceOptimization, defaults.valenceOptimization);

@@ -48,6 +48,9 @@ constexpr const char* kRepair = "repair";
 //! Remeshing: keep the vertex count asked for where the topology needs more (RemeshParams::
 //! exactCount, the CLI's --exact-count); default off: the topology is kept.
 constexpr const char* kExactCount = "exactCount";
+//! Remeshing: the core's preset (remesh_presets.h, the CLI's --preset), an enum: fast / default /
+//! quality; "CVT iterations" and "FCVT iterations" at their defaults leave the preset's.
+constexpr const char* kPreset = "preset";
 //! Remeshing: remesh only the selected faces (region.h), the rest kept; default off.
 constexpr const char* kSelectedOnly = "selectedOnly";
 //! Quality report: the layer d_RMS / d_H are measured against (itself = no distances).

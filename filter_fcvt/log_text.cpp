@@ -44,6 +44,7 @@ constexpr ParameterLabel kParameterLabels[] = {
     {"maxCrosses", "Crosses drawn (at most)"},
     {"selectedOnly", "Remesh only selected faces"},
     {"exactCount", "Exact vertex count"},
+    {"preset", "Preset"},
 };
 
 }  // namespace

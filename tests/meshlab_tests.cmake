@@ -57,8 +57,12 @@ if(TARGET fcvt)
   add_test(NAME meshlab_exact_count
     COMMAND bash "${_fcvt_ml_dir}/exact_count.sh" "${PROJECT_SOURCE_DIR}"
             "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/exact_count" "$<TARGET_FILE:fcvt>")
+  # "Preset" (preset) fast against the CLI's --preset fast; an out-of-range value's message.
+  add_test(NAME meshlab_preset
+    COMMAND bash "${_fcvt_ml_dir}/preset.sh" "${PROJECT_SOURCE_DIR}"
+            "$<TARGET_FILE:filter_fcvt>" "${_fcvt_ml_work}/preset" "$<TARGET_FILE:fcvt>")
   set_tests_properties(meshlab_filter_equals_cli meshlab_log_order meshlab_texture_transfer meshlab_side_files
-                       meshlab_exact_count PROPERTIES LABELS meshlab TIMEOUT 600)
+                       meshlab_exact_count meshlab_preset PROPERTIES LABELS meshlab TIMEOUT 600)
 endif()
 add_test(NAME meshlab_far_coordinates
   COMMAND bash "${_fcvt_ml_dir}/far_coordinates.sh" "${PROJECT_SOURCE_DIR}"

@@ -20,7 +20,7 @@ expect() {  # expect FILTER PARAM...: the filter's line has these parameters
     grep -qw -- "$p" <<<"$line" || fail "no parameter $p in: $line"
   done
 }
-expect remeshing_field_aligned_cvt_fcvt vertexcount lambda_ sizemode targetlength seed repair exactcount
+expect remeshing_field_aligned_cvt_fcvt vertexcount lambda_ sizemode targetlength seed repair exactcount preset
 expect compute_6_rosy_field fieldsource seed maxcrosses
 expect remeshing_quality_report_fcvt referencelayer colorirregular
 [ "$(wc -l < "$work/out/names.txt")" -eq 3 ] || fail "expected exactly three filters"

@@ -22,10 +22,10 @@ rm -rf "$work/out"; mkdir -p "$work/out"
 server="$(stage_meshlab "$work/stage" "$plugin")"
 shipped="$FCVT_SOURCE_DIR/resources/fcvt-remesh.mlx"
 old="$FCVT_SOURCE_DIR/tests/meshlab/fcvt-remesh-13params.mlx"
-# The parameters added after that script (gradation, repair, selectedOnly, exactCount): meshlabserver
-# needs every one.
-added_lines="$(grep 'name="gradation"\|name="repair"\|name="selectedOnly"\|name="exactCount"' "$shipped")"
-[ "$(grep -c . <<<"$added_lines")" -eq 4 ] || fail "no gradation, repair, selectedOnly and exactCount in $shipped"
+# The parameters added after that script (gradation, repair, selectedOnly, exactCount, preset):
+# meshlabserver needs every one.
+added_lines="$(grep 'name="gradation"\|name="repair"\|name="selectedOnly"\|name="exactCount"\|name="preset"' "$shipped")"
+[ "$(grep -c . <<<"$added_lines")" -eq 5 ] || fail "no gradation, repair, selectedOnly, exactCount and preset in $shipped"
 
 # filter_body MLX NAME=VALUE...: the <filter> element of MLX with those values.
 filter_body() {

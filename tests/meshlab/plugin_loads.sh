@@ -31,7 +31,7 @@ frozen = {  # filter name -> parameter names, in the scripts' order (frozen API)
         ["vertexCount", "lambda", "cvtIterations", "fcvtIterations", "fieldSource", "seed",
          "sizeMode", "targetLength", "valenceOptimization", "featureAngle", "featureSelection",
          "adaptive", "colorIrregular", "gradation", "repair", "selectedOnly",
-         "exactCount"],
+         "exactCount", "preset"],
     "Compute 6-RoSy Field": ["fieldSource", "seed", "maxCrosses"],
     "Remeshing Quality Report (FCVT)": ["referenceLayer", "colorIrregular"],
 }
