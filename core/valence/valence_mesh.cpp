@@ -299,16 +299,26 @@ void ValenceMesh::smoothLocally(const std::vector<int>& verts, int steps)
 double ValenceMesh::meanFieldDistance() const
 {
     if (!surface_->field) return 0;
+    // Per vertex on the threads, summed in vertex order: the same figure on any thread count.
+    const int n = vertexCount();
+    std::vector<double> sums(size_t(n), 0.0);
+    std::vector<int> counts(size_t(n), 0);
+#pragma omp parallel
+    {
+        Ring r;
+#pragma omp for schedule(static)
+        for (int v = 0; v < n; ++v) {
+            const ClosestPoint& c = data(v).closest;
+            if (!vertexAlive(v) || c.face < 0) continue;
+            const FieldSample s = interpolateField(surface_->input, *surface_->field, c.face, c.barycentric);
+            ring(v, r);
+            for (int w : r.verts) sums[size_t(v)] += directionDistance(position(w) - position(v), s.normal, s.direction);
+            counts[size_t(v)] = static_cast<int>(r.verts.size());
+        }
+    }
     double sum = 0;
     long long count = 0;
-    Ring r;
-    for (int v = 0; v < vertexCount(); ++v) {
-        const ClosestPoint& c = data(v).closest;
-        if (!vertexAlive(v) || c.face < 0) continue;
-        const FieldSample s = interpolateField(surface_->input, *surface_->field, c.face, c.barycentric);
-        ring(v, r);
-        for (int w : r.verts) sum += directionDistance(position(w) - position(v), s.normal, s.direction), ++count;
-    }
+    for (int v = 0; v < n; ++v) sum += sums[size_t(v)], count += counts[size_t(v)];
     return count > 0 ? sum / count : 0;
 }
 
