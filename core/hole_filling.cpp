@@ -68,9 +68,9 @@ HoleFillReport closeSmallHoles(TriMesh& mesh, double maxAcross)
     const std::vector<std::vector<int>> loops = borderLoops(mesh);
     if (loops.empty()) return report;
     const std::vector<double> pieceExtent = pieceExtents(mesh);
+    // The mesh's edges, gathered when a first loop is small enough to close (most inputs have none).
     std::unordered_set<std::uint64_t> edges;
-    for (const Face& f : mesh.faces)
-        for (int k = 0; k < 3; ++k) edges.insert(edgeKey(f[size_t(k)], f[size_t((k + 1) % 3)]));
+    bool edgesGathered = false;
 
     std::vector<Face> patch;
     for (const std::vector<int>& loop : loops) {
@@ -78,6 +78,11 @@ HoleFillReport closeSmallHoles(TriMesh& mesh, double maxAcross)
         // Across: the diameter of a round hole with the loop's bounding box (its diagonal / sqrt 2).
         const double extent = boxDiagonal(mesh.vertices, loop);
         if (extent / std::sqrt(2.0) >= maxAcross || pieceExtent[size_t(loop[0])] <= 2 * extent) continue;
+        if (!edgesGathered) {
+            for (const Face& f : mesh.faces)
+                for (int k = 0; k < 3; ++k) edges.insert(edgeKey(f[size_t(k)], f[size_t((k + 1) % 3)]));
+            edgesGathered = true;
+        }
         std::vector<int> sorted = loop;
         std::sort(sorted.begin(), sorted.end());
         // The loop runs with the surface on its left; the hole's triangles run the other way.
