@@ -153,7 +153,7 @@ struct ClosestPointTree::Impl {
     //! The build's top levels run on one thread, the 2^kTopLevels subtrees below them on all,
     //! from this many faces on.
     static constexpr int kTopLevels = 3;
-    static constexpr int kMinFacesForThreads = 100000;
+    static constexpr int kMinFacesForThreads = 20000;
     //! The traversal descends into the nearer child and pushes at most the farther one per
     //! level, so the stack never holds more than `depth` entries; a median split bounds the
     //! depth by log2(faces) + 1 <= 32 for any int face count.
