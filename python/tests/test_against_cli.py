@@ -49,6 +49,9 @@ def test_keywords_pass_through():
         cli, py, report, r = remesh_both(tmp, "flags", ["--vertices", 600, "--no-valence", "--seed", 7],
                                          vertices=600, no_valence=True, seed=7)
         check(py == cli and r.report["valence"] == report["valence"], "no_valence=True, seed=7 differ from the CLI's")
+        cli, py, report, r = remesh_both(tmp, "fast", ["--vertices", 600, "--preset", "fast"], vertices=600, preset="fast")
+        check(py == cli and py != base_py, "preset='fast' differs from the CLI's --preset fast, or changes nothing")
+        check(r.report["params"] == report["params"] and r.report["params"]["fcvt_iterations"] == 5, "fast's params")
 
 
 def test_target_length():
