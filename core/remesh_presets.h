@@ -70,7 +70,7 @@ inline void applyPreset(RemeshParams& params, Preset preset)
         params.latticeIterations = 2;
         params.latticePasses = 2;
         params.optimisationFacesPerSample = 2;  // the least a sample (optimisationFaceTarget)
-        params.simplifyBlockFaces = 20000;      // in parallel from 40 000 faces on
+        params.simplifyBlockFaces = 16000;      // in parallel from 32 000 faces on
         params.valence.maxRounds = 10;
         params.valence.lookAheadDepth = 2;
         params.valence.relaxIterations = 3;

@@ -39,7 +39,7 @@ expected = {
     "fast": {"cvt_iterations": 0, "fcvt_iterations": 5, "large_run_fcvt_iterations": 5, "boundary_iterations": 3,
              "field_smoothing_iterations": 8, "lattice_iterations": 2, "lattice_passes": 2, "optimisation_faces_per_sample": 2,
              "valence_rounds": 10, "valence_look_ahead": 2, "valence_relax_iterations": 3, "valence_local_smoothing": 1,
-             "valence_sag_repair_rounds": 0, "simplify_block_faces": 20000},
+             "valence_sag_repair_rounds": 0, "simplify_block_faces": 16000},
     "default": {"lloyd_iterations": 10, "lattice_lloyd_iterations": 0, "cvt_iterations": 10, "fcvt_iterations": 40,
                 "large_run_fcvt_iterations": 20, "boundary_iterations": 10, "field_smoothing_iterations": 20,
                 "lattice_iterations": 4, "lattice_passes": 3, "optimisation_faces_per_sample": 4, "valence_rounds": 30,
