@@ -34,7 +34,7 @@ def main():
     ap.add_argument("--presets", default="default,fast")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--repeat", type=int, default=5)
-    a = ap.parse_args()
+    a = ap.parse_intermixed_args()
     runs = [("baseline", a.baseline, None)] if a.baseline else []
     runs += [(p, a.fcvt, p) for p in a.presets.split(",")]
     print(f"# fixed costs: {a.threads} threads, medians of {a.repeat} alternating rounds, seconds")
