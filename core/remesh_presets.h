@@ -44,22 +44,11 @@ inline Preset presetFromName(const std::string& name)
 }
 
 //! Sets the fields of `params` that `preset` names (schedule, field and lattice sweeps, valence
-//! stage, optimisation surface); the others (vertex count, seed, threads, features, ...) stay.
+//! stage, optimisation surface) on parameters that have RemeshParams' defaults there, as a front
+//! end's do before its options are read; the others (vertex count, seed, features, ...) stay.
 inline void applyPreset(RemeshParams& params, Preset preset)
 {
     const RemeshParams defaults;
-    params.lloydIterations = defaults.lloydIterations;
-    params.latticeLloydIterations = defaults.latticeLloydIterations;
-    params.cvtIterations = defaults.cvtIterations;
-    params.fcvtIterations = defaults.fcvtIterations;
-    params.largeRunFcvtIterations = defaults.largeRunFcvtIterations;
-    params.boundaryIterations = defaults.boundaryIterations;
-    params.fieldSmoothingIterations = defaults.fieldSmoothingIterations;
-    params.latticeIterations = defaults.latticeIterations;
-    params.latticePasses = defaults.latticePasses;
-    params.optimisationFacesPerSample = defaults.optimisationFacesPerSample;
-    params.simplifyBlockFaces = defaults.simplifyBlockFaces;
-    params.valence = defaults.valence;
     switch (preset) {
     case Preset::Default: break;
     case Preset::Fast:
