@@ -42,3 +42,26 @@ run_meshlabserver() {
 mlx_param() {
   sed -n "s/.*name=\"$2\"[^>]*value=\"\([^\"]*\)\".*/\1/p" "$1" | head -n 1
 }
+
+# The count of ELEMENT (vertex, face) in the header of the PLY file FILE.
+ply_count() {
+  head -c 4096 "$1" | tr -d '\r' | sed -n "s/^element $2 \\([0-9]*\\).*/\\1/p" | head -n 1
+}
+
+# mlx_with SCRIPT OUT N PARAM VALUE: the .mlx SCRIPT with vertexCount N and PARAM set to VALUE
+# ("absent": PARAM left out of it) written to OUT; fails when the edit did not take.
+mlx_with() {
+  local script="$1" out="$2" n="$3" param="$4" value="$5"
+  local args=(-e 's/\(name="vertexCount"[^>]*value="\)[^"]*"/\1'"$n"'"/')
+  if [ "$value" = absent ]; then
+    args+=(-e "/name=\"$param\"/d")
+  else
+    args+=(-e 's/\(name="'"$param"'"[^>]*value="\)[^"]*"/\1'"$value"'"/')
+  fi
+  sed "${args[@]}" "$script" > "$out"
+  if [ "$value" = absent ]; then
+    ! grep -q "name=\"$param\"" "$out" || fail "$out: $param still in the script"
+  else
+    grep -q "name=\"$param\" value=\"$value\"" "$out" || fail "$out: $param $value not set"
+  fi
+}

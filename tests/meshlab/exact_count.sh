@@ -20,23 +20,10 @@ n=150
 input="$work/out/necked_ring.off"
 "$FCVT_SOURCE_DIR/tests/meshlab/obj2off.sh" "$FCVT_SOURCE_DIR/resources/necked_ring.obj" "$input"
 
-vertex_count() {  # PLY -> its vertex count (the header's)
-  head -c 4096 "$1" | tr -d '\r' | sed -n 's/^element vertex \([0-9]*\).*/\1/p' | head -n 1
-}
-
 # filter NAME EXACT(true|false|absent): the shipped script at N vertices -> $work/out/NAME.ply
 filter() {
-  local name="$1" exact="$2" mlx="$work/out/$1.mlx"
-  local args=(-e 's/\(name="vertexCount"[^>]*value="\)[^"]*"/\1'"$n"'"/')
-  case "$exact" in
-    absent) args+=(-e '/name="exactCount"/d') ;;
-    *) args+=(-e 's/\(name="exactCount"[^>]*value="\)[^"]*"/\1'"$exact"'"/') ;;
-  esac
-  sed "${args[@]}" "$shipped" > "$mlx"
-  case "$exact" in
-    absent) ! grep -q 'name="exactCount"' "$mlx" || fail "$name: exactCount still in the script" ;;
-    *) grep -q "name=\"exactCount\" value=\"$exact\"" "$mlx" || fail "$name: exactCount $exact not set" ;;
-  esac
+  local name="$1" mlx="$work/out/$1.mlx"
+  mlx_with "$shipped" "$mlx" "$n" exactCount "$2"
   run_meshlabserver "$server" "$work/out/$name.txt" -i "$input" -o "$work/out/$name.ply" -s "$mlx"
 }
 
@@ -48,10 +35,10 @@ filter default false
   || fail "fcvt remesh --exact-count failed"
 "$cli" remesh "$input" "$work/out/cli-default.ply" --vertices "$n" --quiet 2>/dev/null || fail "fcvt remesh failed"
 
-filter_exact="$(vertex_count "$work/out/exact.ply")"
-filter_default="$(vertex_count "$work/out/default.ply")"
-cli_exact="$(vertex_count "$work/out/cli-exact.ply")"
-cli_default="$(vertex_count "$work/out/cli-default.ply")"
+filter_exact="$(ply_count "$work/out/exact.ply" vertex)"
+filter_default="$(ply_count "$work/out/default.ply" vertex)"
+cli_exact="$(ply_count "$work/out/cli-exact.ply" vertex)"
+cli_default="$(ply_count "$work/out/cli-default.ply" vertex)"
 echo "vertices at $n: exactCount true: filter $filter_exact, CLI --exact-count $cli_exact;" \
   "exactCount false: filter $filter_default, CLI $cli_default"
 [ -n "$filter_exact" ] && [ -n "$filter_default" ] && [ -n "$cli_exact" ] && [ -n "$cli_default" ] \
@@ -68,7 +55,7 @@ grep -Eq "FCVT warning: [0-9]+ vertices added where the surface is thinner than 
 # A script without exactCount.
 filter absent absent
 if [ "$MLS_RC" -eq 0 ]; then
-  absent="$(vertex_count "$work/out/absent.ply")"
+  absent="$(ply_count "$work/out/absent.ply" vertex)"
   [ "$absent" = "$filter_default" ] || fail "a script without exactCount: $absent vertices, the default $filter_default"
   echo "a script without exactCount ran with the default: $absent vertices"
 elif grep -q "Assertion .parameterSet.size() == required.size()' failed" "$work/out/absent.txt.err"; then

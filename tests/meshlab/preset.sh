@@ -21,23 +21,10 @@ grep -q 'name="preset" value="1"' "$shipped" || fail "no preset (default 1, defa
 n=1000
 input="$FCVT_SOURCE_DIR/resources/bunny.ply"
 
-count() {  # PLY ELEMENT -> the header's count of that element
-  head -c 4096 "$1" | tr -d '\r' | sed -n "s/^element $2 \\([0-9]*\\).*/\\1/p" | head -n 1
-}
-
 # filter NAME PRESET(0..|absent): the shipped script at N vertices -> $work/out/NAME.ply
 filter() {
-  local name="$1" preset="$2" mlx="$work/out/$1.mlx"
-  local args=(-e 's/\(name="vertexCount"[^>]*value="\)[^"]*"/\1'"$n"'"/')
-  case "$preset" in
-    absent) args+=(-e '/name="preset"/d') ;;
-    *) args+=(-e 's/\(name="preset"[^>]*value="\)[^"]*"/\1'"$preset"'"/') ;;
-  esac
-  sed "${args[@]}" "$shipped" > "$mlx"
-  case "$preset" in
-    absent) ! grep -q 'name="preset"' "$mlx" || fail "$name: preset still in the script" ;;
-    *) grep -q "name=\"preset\" value=\"$preset\"" "$mlx" || fail "$name: preset $preset not set" ;;
-  esac
+  local name="$1" mlx="$work/out/$1.mlx"
+  mlx_with "$shipped" "$mlx" "$n" preset "$2"
   run_meshlabserver "$server" "$work/out/$name.txt" -i "$input" -o "$work/out/$name.ply" -s "$mlx"
 }
 
@@ -45,8 +32,8 @@ filter fast 0
 [ "$MLS_RC" -eq 0 ] || fail "preset fast: meshlabserver exited with $MLS_RC"
 "$cli" remesh "$input" "$work/out/cli-fast.ply" --vertices "$n" --preset fast --quiet 2>/dev/null \
   || fail "fcvt remesh --preset fast failed"
-filter_v="$(count "$work/out/fast.ply" vertex)"; filter_f="$(count "$work/out/fast.ply" face)"
-cli_v="$(count "$work/out/cli-fast.ply" vertex)"; cli_f="$(count "$work/out/cli-fast.ply" face)"
+filter_v="$(ply_count "$work/out/fast.ply" vertex)"; filter_f="$(ply_count "$work/out/fast.ply" face)"
+cli_v="$(ply_count "$work/out/cli-fast.ply" vertex)"; cli_f="$(ply_count "$work/out/cli-fast.ply" face)"
 echo "preset fast at $n: filter $filter_v vertices, $filter_f faces; CLI --preset fast $cli_v vertices, $cli_f faces"
 [ -n "$filter_v" ] && [ -n "$filter_f" ] && [ -n "$cli_v" ] && [ -n "$cli_f" ] || fail "a count could not be read"
 [ "$filter_v" = "$cli_v" ] && [ "$filter_f" = "$cli_f" ] \
@@ -69,7 +56,7 @@ filter absent absent
 if [ "$MLS_RC" -eq 0 ]; then
   grep -Eq "(^|[:;] )cvt E_CVT" <<<"$(grep "FCVT energy at the end of each phase" "$work/out/absent.txt")" \
     || fail "a script without preset: no CVT phase (not the default preset)"
-  echo "a script without preset ran with the default: $(count "$work/out/absent.ply" vertex) vertices"
+  echo "a script without preset ran with the default: $(ply_count "$work/out/absent.ply" vertex) vertices"
 elif grep -q "Assertion .parameterSet.size() == required.size()' failed" "$work/out/absent.txt.err"; then
   echo "NOTE: meshlabserver 2020.09 aborts ($MLS_RC) on a script without preset: it asserts that a script lists every parameter"
 else
