@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -85,7 +86,7 @@ private:
         int a, b;
     };
 
-    double targetAt(int v) const { return surface_.target(mesh_.data(v).face); }
+    double targetAt(int v) const { return mesh_.data(v).target; }
     double edgeTarget(int a, int b) const { return 0.5 * (targetAt(a) + targetAt(b)); }
     double length(int a, int b) const { return (mesh_.position(a) - mesh_.position(b)).norm(); }
     Vec3 faceNormal(int f) const
@@ -269,6 +270,7 @@ void Remesher::split(int a, int b)
         const Vec3 old = triangleNormal(x, y, c);
         if (triangleNormal(x, p, c).dot(old) <= 0 || triangleNormal(p, y, c).dot(old) <= 0) p = mid;
     }
+    info.target = surface_.targetAt(p, info.face);
     const int v = mesh_.addVertex(p, info);
     featureNbrs_.emplace_back();
     for (int f : faces_) {
@@ -514,6 +516,7 @@ bool Remesher::moveVertex(int v, bool move, Vec3& p, VertexInfo& info) const
     }
     p = spot.point;
     info.face = spot.face;
+    info.target = surface_.targetAt(p, info.face);
     return true;
 }
 
@@ -624,6 +627,11 @@ LocalRemeshResult remeshLocally(const LocalRemeshInput& input, const LocalRemesh
     if (std::find(input.selectedFaces.begin(), input.selectedFaces.end(), 1) == input.selectedFaces.end()) return {};
     Surface surface(input.surface, input.tree, input.selectedFaces, input.targetLengthPerFace, params.targetLength);
     surface.addCurves(input.featureEdges, input.corners);
+    std::unique_ptr<StripSizing> strips;
+    if (params.refineStrips) {
+        strips = std::make_unique<StripSizing>(input.surface, input.selectedFaces, params.targetLength, params.strips);
+        if (strips->sources() > 0) surface.setStripSizing(strips.get());
+    }
     Remesher remesher(surface);
     remesher.run(params.iterations);
     return remesher.takeResult();

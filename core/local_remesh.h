@@ -9,6 +9,7 @@
 // roles and face hints of the result.
 #include "closest_point.h"
 #include "mesh.h"
+#include "strip_sizing.h"
 #include "valence/surface.h"
 
 #include <array>
@@ -22,6 +23,11 @@ struct LocalRemeshParams {
     double targetLength = 1.0746;
     //! Rounds of split / collapse / flip / smoothing.
     int iterations = 10;
+    //! Shorter edges on strips between two creases narrower than the target length (a CAD part's
+    //! rims, steps, small holes), graded back around them: triangles there that span the strip
+    //! and keep both creases without being slivers (strip_sizing.h).
+    bool refineStrips = true;
+    StripSizingParams strips;
 };
 
 struct LocalRemeshInput {

@@ -117,6 +117,7 @@ StartMesh Surface::startMesh() const
         info.role = stop[v] ? VertexRole::Corner
                             : (info.onBorder ? VertexRole::Boundary : (feature ? VertexRole::Feature : VertexRole::Free));
         if (info.role == VertexRole::Corner) info.corner = v;
+        info.target = targetAt(mesh.vertices[v], info.face);
         start.info.push_back(info);
     }
     return start;

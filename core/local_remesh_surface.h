@@ -5,8 +5,10 @@
 // Internal to the core.
 #include "closest_point.h"
 #include "mesh.h"
+#include "strip_sizing.h"
 #include "valence/surface.h"
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -39,6 +41,7 @@ struct VertexInfo {
     int curve = -1;         //!< Boundary / Feature: the surface curve edge it lies on
     int corner = -1;        //!< Corner: its surface vertex
     int component = -1;     //!< its surface component
+    double target = 0;      //!< the target edge length where it is (Surface::targetAt)
 };
 
 //! The selected faces as the remeshing starts from them, on the surface vertices they use (in
@@ -73,6 +76,14 @@ public:
     //! The selected faces, each vertex a corner (stop), on a border, on a feature line or free.
     StartMesh startMesh() const;
     double target(int face) const { return perFace_.empty() ? uniform_ : perFace_[face]; }
+    //! The target edge length at p on `face`: the face's, or shorter near a narrow strip.
+    double targetAt(const Vec3& p, int face) const
+    {
+        const double own = target(face);
+        return strips_ ? std::min(own, strips_->at(p)) : own;
+    }
+    //! Shorter edges near narrow strips (null: none); must outlive the Surface.
+    void setStripSizing(const StripSizing* strips) { strips_ = strips; }
     //! The closest point to p on p's own sheet: a walk over the faces from `face`; the tree's
     //! answer if the walk does not settle and that lies within `radius` of where it got. False
     //! (refused) if the answer's face is turned away from `normal`.
@@ -92,6 +103,7 @@ private:
     std::vector<int> across_;    //!< per half-edge 3 f + k: the selected face across it, -1 if none
     const std::vector<double>& perFace_;
     double uniform_;
+    const StripSizing* strips_ = nullptr;
 };
 
 }  // namespace fieldcvt::local_remesh_detail

@@ -164,7 +164,9 @@ TEST(LocalRemesh, ThinPlateKeepsItsThirtyNarrowHoles)
     const TriMesh surface = perforatedPlate(0.2, 0.4, 2.0);
     const TopologySummary input = computeTopology(surface);
     ASSERT_EQ(input.genus, 30);
-    const LocalRemeshResult result = remeshAll(surface);
+    LocalRemeshParams uniform;
+    uniform.refineStrips = false;
+    const LocalRemeshResult result = remeshAll(surface, uniform);
     expectSameTopology(result, input);
     EXPECT_LT(largestDistance(result.mesh, surface), 1e-6);
     // The plate's vertices are not all on its rims: its faces were remeshed to the target.
@@ -178,7 +180,9 @@ TEST(LocalRemesh, ThinPlateKeepsItsThirtyNarrowHoles)
 TEST(LocalRemesh, ThinBoxWithoutFeatureLinesKeepsItsRim)
 {
     const TriMesh surface = scaled(testmesh::thinBox(20, 0.02), 12.0);  // 12 x 0.24 x 12
-    const LocalRemeshResult result = remeshAll(surface);
+    LocalRemeshParams uniform;
+    uniform.refineStrips = false;
+    const LocalRemeshResult result = remeshAll(surface, uniform);
     expectSameTopology(result, computeTopology(surface));
     EXPECT_GT(surfaceArea(result.mesh), 0.97 * surfaceArea(surface));
     Vec3 lo = result.mesh.vertices[0], hi = lo;
@@ -189,6 +193,30 @@ TEST(LocalRemesh, ThinBoxWithoutFeatureLinesKeepsItsRim)
     EXPECT_GT(hi.z(), 12 - 1e-9);
     EXPECT_NEAR(meanEdgeLength(result.mesh) / kTarget, 1.0, 0.15);
     printFigures(result, surface);
+}
+
+TEST(LocalRemesh, ThinBoxRimGetsWellShapedTrianglesFromTheStripSizing)
+{
+    // The same 12 x 0.24 x 12 box, with the default strip sizing: edges about 1.5 times the rim's
+    // width on the rims, graded back to the target across the faces (issue 52, item 4).
+    const TriMesh surface = scaled(testmesh::thinBox(20, 0.02), 12.0);
+    LocalRemeshParams uniform;
+    uniform.refineStrips = false;
+    const LocalRemeshResult refined = remeshAll(surface), flat = remeshAll(surface, uniform);
+    expectSameTopology(refined, computeTopology(surface));
+    EXPECT_LT(largestDistance(refined.mesh, surface), 1e-6);
+    EXPECT_GT(surfaceArea(refined.mesh), 0.99 * surfaceArea(surface));
+    // Alone (before the valence stage's repairs) the rims' triangles are already far less thin,
+    // and the rims are no longer cut off.
+    const QualityMetrics quality = computeQuality(refined.mesh), before = computeQuality(flat.mesh);
+    EXPECT_GT(quality.thetaMin, before.thetaMin + 5.0);
+    EXPECT_GT(surfaceArea(refined.mesh), surfaceArea(flat.mesh));
+    // Shorter edges only where the rims need them: more vertices, but far from a mesh at the
+    // rims' length everywhere (about (12 / 0.36)^2 * 2.3 = 2 600 vertices).
+    EXPECT_GT(refined.mesh.vertexCount(), flat.mesh.vertexCount());
+    EXPECT_LT(refined.mesh.vertexCount(), 3 * flat.mesh.vertexCount());
+    printFigures(flat, surface);
+    printFigures(refined, surface);
 }
 
 TEST(LocalRemesh, HundredTinyShellsStayHundredSpheres)

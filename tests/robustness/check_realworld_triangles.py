@@ -3,8 +3,9 @@
 `fcvt remesh IN OUT.ply --vertices N`, at N = max(500, V/4) and N = max(300, V/8) (V: the input's
 vertices as `fcvt metrics` reads them), no zero-area face on every run; no angle under 15 degrees and
 at most 0.5 % of the triangles with an angle under 30 degrees (`fcvt metrics OUT --json`), borders
-included, on every run whose shells the restricted Delaunay triangulation kept (issue 52: a shell
-remeshed by local operations to keep its topology is reported, not held to these two bars yet).
+included, on every run whose shells the restricted Delaunay triangulation kept, and on at least
+two thirds of all runs (issue 52: a shell remeshed by local operations is counted, not held to
+the two bars each).
 
   check_realworld_triangles.py FCVT REALWORLD_DIR WORKDIR NAME...
 """
@@ -47,18 +48,21 @@ def main():
             print(f"{label}: theta_min {m['theta_min']:.2f}, {m['pct_lt30']:.2f} % under 30, {zero} zero-area faces, "
                   f"{local} shells remeshed by local operations")
             check(zero == 0, f"{label}: {zero} zero-area faces")
+            meets = m["theta_min"] >= 15 and m["pct_lt30"] <= 0.5
             if local:
-                # Issue 52 item 4, not met yet: a shell remeshed by local operations to keep its
-                # topology has its triangles shaped by the valence stage, not by the CVT (CAD
-                # creases, a scan's ragged border). Its figures are printed and tracked in
+                # Issue 52 item 4, not met everywhere yet: a shell remeshed by local operations
+                # keeps the bars where the strip sizing resolves its creases (tray_bottom's rims,
+                # greek_helmet, casting), not yet on adis16480's sub-millimetre steps or a scan's
+                # ragged border (lato180, many_small_holes). Counted here, tracked in
                 # docs/measurements.md; the bars below hold wherever the triangulation kept it.
+                held += meets
                 continue
             held += 1
             check(m["theta_min"] >= 15, f"{label}: smallest angle {m['theta_min']:.2f} < 15 degrees")
             check(m["pct_lt30"] <= 0.5, f"{label}: {m['pct_lt30']:.2f} % of the triangles under 30 degrees (> 0.5 %)")
-    # 7 of the 18 runs keep every shell of the triangulation today: fewer means shells went to
-    # the local remeshing that did not before, which this test must not let pass unseen.
-    check(held >= 7 * len(names) // 9, f"only {held} runs held to the bars (at least {7 * len(names) // 9})")
+    # 12 of the 18 runs meet the bars today (7 kept by the triangulation, 5 of the 11 with local
+    # shells): fewer means a run lost them, which this test must not let pass unseen.
+    check(held >= 4 * len(names) // 3, f"only {held} runs meet the bars (at least {4 * len(names) // 3})")
     finish()
 
 
