@@ -187,7 +187,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     TriMesh mesh = std::move(valenced.mesh);
     if (surface.simplified) {
         if (!surface.inputTree) surface.inputTree = std::make_unique<ClosestPointTree>(prepared.surface);
-        mesh.vertices = projectOnInput(std::move(mesh.vertices), *surface.inputTree, pipeline);
+        mesh.vertices = projectOnInput(mesh, *surface.inputTree, pipeline);
     }
     if (plan.useField) {
         // The field at the output's vertices (written with a PLY output).

@@ -12,6 +12,7 @@
 #include "repair.h"
 #include "sampling.h"
 #include "side_by_side.h"
+#include "triangle_shape.h"
 
 #include <omp.h>
 
@@ -318,6 +319,10 @@ FieldStage computeFieldStage(const TriMesh& input, const OptimisationSurface& su
     return out;
 }
 
+//! projectOnInput: a face whose smallest angle the projection would bring under this (and
+//! under its own on the coarse copy) keeps its vertices where they are (issue 52 item 4's bar).
+constexpr double kProjectionSliverDegrees = 15.0;
+
 bool usesField(const RemeshParams& params) { return params.fcvtIterations > 0 && params.lambda > 0; }
 
 ValenceSurface valenceSurface(const PassContext& context)
@@ -342,15 +347,38 @@ ValencedMesh optimiseValence(ExtractedMesh extracted, const PassContext& context
     return out;
 }
 
-std::vector<Vec3> projectOnInput(std::vector<Vec3> vertices, const ClosestPointTree& inputTree, Pipeline& pipeline)
+std::vector<Vec3> projectOnInput(const TriMesh& mesh, const ClosestPointTree& inputTree, Pipeline& pipeline)
 {
     // The coarse surface is within SimplifyParams::maxError of the input. Border and feature
     // vertices lie on input edges, which both surfaces have.
+    std::vector<Vec3> projected(mesh.vertices.size());
     pipeline.run("project", [&] {
+        const int n = mesh.vertexCount();
 #pragma omp parallel for schedule(static)
-        for (int v = 0; v < static_cast<int>(vertices.size()); ++v) vertices[v] = inputTree.closest(vertices[v]).point;
+        for (int v = 0; v < n; ++v) projected[v] = inputTree.closest(mesh.vertices[v]).point;
+        // Where the input differs from the coarse copy by more than the mesh resolves (a scan's
+        // ragged border, a wall thinner than an edge: a local shell's vertices, issue 52),
+        // neighbours can land on one input point and make a sliver or a zero-area face. Such a
+        // face keeps its vertices on the coarse copy, until no projected face is a new sliver.
+        const double sliver = kProjectionSliverDegrees * kPi / 180.0;
+        std::vector<double> before(mesh.faces.size());
+#pragma omp parallel for schedule(static)
+        for (int f = 0; f < mesh.faceCount(); ++f) {
+            const Face& t = mesh.faces[f];
+            before[f] = smallestAngle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+        }
+        for (bool again = true; again;) {
+            again = false;
+            for (int f = 0; f < mesh.faceCount(); ++f) {
+                const Face& t = mesh.faces[f];
+                const double after = smallestAngle(projected[t[0]], projected[t[1]], projected[t[2]]);
+                if (after >= std::min(sliver, before[f]) - 1e-12) continue;
+                for (int v : t)
+                    if (projected[v] != mesh.vertices[v]) projected[v] = mesh.vertices[v], again = true;
+            }
+        }
     });
-    return vertices;
+    return projected;
 }
 
 Measurement measure(const TriMesh& mesh, const OptimisationSurface& surface, const ClosestPointTree& tree,

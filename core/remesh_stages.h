@@ -248,8 +248,10 @@ struct ValencedMesh {
     ValenceStats stats;
 };
 ValencedMesh optimiseValence(ExtractedMesh extracted, const PassContext& context);
-//! From the coarse copy back onto the input surface (`inputTree`: the prepared surface's).
-std::vector<Vec3> projectOnInput(std::vector<Vec3> vertices, const ClosestPointTree& inputTree, Pipeline& pipeline);
+//! From the coarse copy back onto the input surface (`inputTree`: the prepared surface's): each
+//! vertex of `mesh` to its closest input point, but for the vertices of faces the move would
+//! turn into slivers (kProjectionSliverDegrees), which stay on the coarse copy.
+std::vector<Vec3> projectOnInput(const TriMesh& mesh, const ClosestPointTree& inputTree, Pipeline& pipeline);
 
 //! measure: Table 2's figures, d_RMS / d_H against the input, the topology check.
 struct Measurement {
