@@ -41,6 +41,8 @@ constexpr double kCollapseSag = 0.1;
 constexpr double kFlipFoldCos = 0.5;
 //! Two triangles around a vertex turned more than 60° from each other make it a crease vertex.
 constexpr double kCreaseCos = 0.5;
+//! removeSlivers' threshold (radians, 15°: issue 52 item 4's smallest angle).
+constexpr double kSliverAngle = 15.0 * kPi / 180.0;
 //! Meshes smaller than this are smoothed on one thread: a parallel region costs more there
 //! (idle threads spin at its barriers, worse on a busy machine).
 constexpr int kParallelVertices = 2000;
@@ -121,6 +123,11 @@ private:
     double collapseQuality(int a, int b);
     void collapse(int a, int b);
     void flipEdges();
+    //! Collapses an edge of each triangle with an angle under kSliverAngle whatever its length,
+    //! where collapseQuality allows it and the new triangles' smallest angle is larger: the
+    //! slivers the length-driven passes leave (a vertex of valence 3 inside a flat triangle,
+    //! a needle between two strips).
+    void removeSlivers();
     bool tryFlip(int a, int b);
     //! Whether flipping a - b into c - d makes the smaller angle of its two triangles larger (the
     //! Delaunay flip, on a surface). Measured against Botsch & Kobbelt's valence flips (6 inside,
@@ -581,6 +588,34 @@ void Remesher::run(int iterations)
     }
     smooth(false);  // every vertex that moved by a split and no smoothing since onto the surface
     flipEdges();    // the last smoothing steps may have left a face flat that a flip mends
+    removeSlivers();
+    flipEdges();
+}
+
+void Remesher::removeSlivers()
+{
+    for (int pass = 0; pass < 4; ++pass) {
+        int done = 0;
+        for (int f = 0; f < mesh_.faceCount(); ++f) {
+            if (!mesh_.faceAlive(f)) continue;
+            const Face t = mesh_.face(f);
+            const double smallest = smallestAngle(mesh_.position(t[0]), mesh_.position(t[1]), mesh_.position(t[2]));
+            if (smallest >= kSliverAngle) continue;
+            // The collapse of one of its edges, either way, whose triangles come out best.
+            double best = smallest;
+            int from = -1, into = -1;
+            for (int k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                const double intoB = collapseQuality(a, b), intoA = collapseQuality(b, a);
+                if (intoB > best) best = intoB, from = a, into = b;
+                if (intoA > best) best = intoA, from = b, into = a;
+            }
+            if (from < 0) continue;
+            collapse(from, into);
+            ++done;
+        }
+        if (done == 0) return;
+    }
 }
 
 LocalRemeshResult Remesher::takeResult()

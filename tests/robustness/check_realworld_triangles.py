@@ -4,7 +4,7 @@
 vertices as `fcvt metrics` reads them), no zero-area face on every run; no angle under 15 degrees and
 at most 0.5 % of the triangles with an angle under 30 degrees (`fcvt metrics OUT --json`), borders
 included, on every run whose shells the restricted Delaunay triangulation kept, and on at least
-two thirds of all runs (issue 52: a shell remeshed by local operations is counted, not held to
+14 of the 18 runs (issue 52: a shell remeshed by local operations is counted, not held to
 the two bars each).
 
   check_realworld_triangles.py FCVT REALWORLD_DIR WORKDIR NAME...
@@ -52,17 +52,17 @@ def main():
             if local:
                 # Issue 52 item 4, not met everywhere yet: a shell remeshed by local operations
                 # keeps the bars where the strip sizing resolves its creases (tray_bottom's rims,
-                # greek_helmet, casting), not yet on adis16480's sub-millimetre steps or a scan's
-                # ragged border (lato180, many_small_holes). Counted here, tracked in
-                # docs/measurements.md; the bars below hold wherever the triangulation kept it.
+                # greek_helmet, casting) and on many_small_holes, not yet on adis16480's steps
+                # under an eighth of the edge or at lato180's border spikes. Counted here, tracked
+                # in docs/measurements.md; the bars hold wherever the triangulation kept it.
                 held += meets
                 continue
             held += 1
             check(m["theta_min"] >= 15, f"{label}: smallest angle {m['theta_min']:.2f} < 15 degrees")
             check(m["pct_lt30"] <= 0.5, f"{label}: {m['pct_lt30']:.2f} % of the triangles under 30 degrees (> 0.5 %)")
-    # 12 of the 18 runs meet the bars today (7 kept by the triangulation, 5 of the 11 with local
+    # 14 of the 18 runs meet the bars today (7 kept by the triangulation, 7 of the 11 with local
     # shells): fewer means a run lost them, which this test must not let pass unseen.
-    check(held >= 4 * len(names) // 3, f"only {held} runs meet the bars (at least {4 * len(names) // 3})")
+    check(held >= 14 * len(names) // 9, f"only {held} runs meet the bars (at least {14 * len(names) // 9})")
     finish()
 
 
