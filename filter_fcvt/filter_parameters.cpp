@@ -150,8 +150,8 @@ void addParameters(FilterId a, const MeshDocument* md, const MeshModel* m, Param
         // The core's presets (the CLI's --preset). A dialog always has a value, so CVT and FCVT
         // iterations at their defaults mean "as the preset says" (applyRemesh).
         par.addParam(advanced(RichEnum(kPreset, kDefaultPresetIndex, presetLabels(), parameterLabel(kPreset),
-                                       QString("The optimiser's schedule (the CLI's --preset): fast, about half "
-                                               "the default's time, the mesh as regular; quality, the paper's "
+                                       QString("The optimiser's schedule (the CLI's --preset): fast, a third to "
+                                               "half the default's time, the mesh as regular; quality, the paper's "
                                                "long schedule. CVT or FCVT iterations other than %1 / %2 "
                                                "override it.")
                                            .arg(defaults.cvtIterations)
