@@ -17,7 +17,8 @@ std::vector<Vec3> project(const TriMesh& mesh, const TriMesh& input)
 {
     const ClosestPointTree tree(input);
     const RemeshParams params;
-    Pipeline pipeline([](const std::string&, double) { return true; }, params);
+    const Progress progress = [](const std::string&, double) { return true; };  // the pipeline keeps a reference
+    Pipeline pipeline(progress, params);
     return projectOnInput(mesh, tree, pipeline);
 }
 
