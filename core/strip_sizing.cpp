@@ -1,9 +1,10 @@
 #include "strip_sizing.h"
 
+#include "boundary.h"
+#include "mesh_edges.h"
+
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <tuple>
 #include <utility>
 
 namespace fieldcvt {
@@ -19,42 +20,17 @@ struct Crease {
 //! The edges of two selected faces turned more than acos(creaseCos) from each other.
 std::vector<Crease> findCreases(const TriMesh& surface, const std::vector<char>& selected, double creaseCos)
 {
-    struct HalfEdge {
-        int lo, hi, face;
-    };
-    std::vector<HalfEdge> halves;
-    for (int f = 0; f < surface.faceCount(); ++f) {
-        if (!selected[f]) continue;
-        const Face& t = surface.faces[f];
-        for (int k = 0; k < 3; ++k) {
-            const int a = t[k], b = t[(k + 1) % 3];
-            halves.push_back({std::min(a, b), std::max(a, b), f});
-        }
-    }
-    std::sort(halves.begin(), halves.end(),
-              [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
+    const EdgeTable edges = buildEdgeTable(surface);
     std::vector<Crease> creases;
-    for (std::size_t i = 0; i < halves.size();) {
-        std::size_t j = i;
-        while (j < halves.size() && halves[j].lo == halves[i].lo && halves[j].hi == halves[i].hi) ++j;
-        if (j - i == 2) {
-            const Vec3 n1 = faceNormal(surface, halves[i].face), n2 = faceNormal(surface, halves[i + 1].face);
-            const double norms = n1.norm() * n2.norm();
-            const Vec3 &a = surface.vertices[halves[i].lo], &b = surface.vertices[halves[i].hi];
-            const double length = (b - a).norm();
-            if (norms > 0 && length > 0 && n1.dot(n2) < creaseCos * norms)
-                creases.push_back({halves[i].lo, halves[i].hi, a, b, (b - a) / length});
-        }
-        i = j;
+    for (int e = 0; e < edges.edgeCount(); ++e) {
+        if (edges.faceCount(e) != 2 || !selected[edges.face(e, 0)] || !selected[edges.face(e, 1)]) continue;
+        const Vec3 n1 = faceNormal(surface, edges.face(e, 0)), n2 = faceNormal(surface, edges.face(e, 1));
+        const auto [u, v] = edges.ends[e];
+        const Vec3 &a = surface.vertices[u], &b = surface.vertices[v];
+        const double norms = n1.norm() * n2.norm(), length = (b - a).norm();
+        if (norms > 0 && length > 0 && n1.dot(n2) < creaseCos * norms) creases.push_back({u, v, a, b, (b - a) / length});
     }
     return creases;
-}
-
-Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-    const Vec3 d = b - a;
-    const double t = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-    return a + t * d;
 }
 
 }  // namespace
@@ -100,7 +76,7 @@ StripSizing::StripSizing(const TriMesh& surface, const std::vector<char>& select
             const Crease& other = creases[c];
             if (other.u == own.u || other.u == own.v || other.v == own.u || other.v == own.v) continue;
             if (std::abs(other.direction.dot(own.direction)) < params.parallelCos) continue;
-            const Vec3 across = closestOnSegment(p, other.a, other.b) - p;
+            const Vec3 across = closestPointOnSegment(p, {other.a, other.b}) - p;
             const double distance = across.norm();
             if (!(distance > 0) || std::abs(across.dot(own.direction)) > params.acrossCos * distance) continue;
             width = std::min(width, distance);
