@@ -1,7 +1,7 @@
 """MeshLab's own isotropic remesher and FCVT side by side in one pymeshlab script, at the same
 vertex count, both measured by FCVT's quality report (its dict): the comparison the plugin is for.
 
-As an example (README.md, "MeshLab filters"):
+As an example (docs/meshlab.md, "Packages: which MeshLab, which release"):
     PYTHONPATH=<pymeshlab> python3 compare_isotropic.py PLUGIN [MESH [TARGET_PERCENT]]
 prints one row per remesher for MESH (default resources/bunny.ply; MeshLab's target edge length
 TARGET_PERCENT % of the diagonal, default 1).
