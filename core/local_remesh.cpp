@@ -6,6 +6,7 @@
 #include "local_remesh_surface.h"
 
 #include "editable_mesh.h"
+#include "boundary.h"
 #include "closest_point.h"
 #include "errors.h"
 #include "triangle_shape.h"
@@ -43,6 +44,10 @@ constexpr double kFlipFoldCos = 0.5;
 constexpr double kCreaseCos = 0.5;
 //! removeSlivers' threshold (radians, 15°: issue 52 item 4's smallest angle).
 constexpr double kSliverAngle = 15.0 * kPi / 180.0;
+//! clipEar cuts off a border spike whose tip is at most this far (a fraction of the target
+//! length) from the ear's third edge: what the border loses there (lato180's two spikes: a
+//! quarter of the mean edge).
+constexpr double kEarHeight = 1.5;
 //! Meshes smaller than this are smoothed on one thread: a parallel region costs more there
 //! (idle threads spin at its barriers, worse on a busy machine).
 constexpr int kParallelVertices = 2000;
@@ -128,6 +133,14 @@ private:
     //! slivers the length-driven passes leave (a vertex of valence 3 inside a flat triangle,
     //! a needle between two strips).
     void removeSlivers();
+    //! Cuts off the border spike at `tip`: a border vertex (a sharp turn of the border is a
+    //! corner, which no collapse moves) whose triangles together turn under kSliverAngle, no
+    //! more than kEarHeight targets from the edges opposite it. Every triangulation that keeps
+    //! such a tip keeps that angle. The tip and its triangles go, the edges opposite it become
+    //! the border: the loop, genus and parts stay. `clippedAt` marks the vertices of the spikes
+    //! cut so far: none of them is cut as a tip in turn, so a long spike loses one ear, not one
+    //! after another.
+    bool clipEar(int tip, std::vector<char>& clippedAt);
     bool tryFlip(int a, int b);
     //! Whether flipping a - b into c - d makes the smaller angle of its two triangles larger (the
     //! Delaunay flip, on a surface). Measured against Botsch & Kobbelt's valence flips (6 inside,
@@ -594,6 +607,7 @@ void Remesher::run(int iterations)
 
 void Remesher::removeSlivers()
 {
+    std::vector<char> clippedAt(mesh_.vertexCount(), 0);
     for (int pass = 0; pass < 4; ++pass) {
         int done = 0;
         for (int f = 0; f < mesh_.faceCount(); ++f) {
@@ -601,6 +615,10 @@ void Remesher::removeSlivers()
             const Face t = mesh_.face(f);
             const double smallest = smallestAngle(mesh_.position(t[0]), mesh_.position(t[1]), mesh_.position(t[2]));
             if (smallest >= kSliverAngle) continue;
+            if (clipEar(t[0], clippedAt) || clipEar(t[1], clippedAt) || clipEar(t[2], clippedAt)) {
+                ++done;
+                continue;
+            }
             // The collapse of one of its edges, either way, whose triangles come out best.
             double best = smallest;
             int from = -1, into = -1;
@@ -616,6 +634,56 @@ void Remesher::removeSlivers()
         }
         if (done == 0) return;
     }
+}
+
+bool Remesher::clipEar(int tip, std::vector<char>& clippedAt)
+{
+    const VertexInfo info = mesh_.data(tip);
+    if (!info.onBorder || !featureNbrs_[tip].empty() || clippedAt[tip]) return false;
+    int a, b;
+    borderNeighbours(tip, a, b);
+    if (a < 0 || b < 0) return false;
+    // The whole turn of the border at the tip, over all its triangles.
+    const Vec3& pt = mesh_.position(tip);
+    double turn = 0, height2 = std::numeric_limits<double>::infinity();
+    for (int f : mesh_.facesOf(tip)) {
+        const Face& t = mesh_.face(f);
+        const int k = t[0] == tip ? 0 : t[1] == tip ? 1 : 2;
+        const Vec3 &p = mesh_.position(t[(k + 1) % 3]), &q = mesh_.position(t[(k + 2) % 3]);
+        turn += std::atan2((p - pt).cross(q - pt).norm(), (p - pt).dot(q - pt));
+        double d2 = 0;
+        closestPointOnSegment(pt, {p, q}, &d2);
+        height2 = std::min(height2, d2);  // to the new border: the edges opposite the tip
+    }
+    if (turn >= kSliverAngle || height2 > std::pow(kEarHeight * targetAt(tip), 2)) return false;
+    // The tip's other neighbours join the border: none may be on it already (that would pinch
+    // it), and with none, the ear's third edge must have a face beyond (not a lone triangle).
+    ring(tip, ringA_);
+    for (int m : ringA_) {
+        if (m == a || m == b) continue;
+        int u, w;
+        borderNeighbours(m, u, w);
+        if (u >= 0) return false;
+    }
+    if (ringA_.size() == 2) {
+        mesh_.edgeFaces(a, b, faces_);
+        if (faces_.size() != 2) return false;
+    }
+    scratch_ = mesh_.facesOf(tip);
+    for (int f : scratch_) mesh_.killFace(f);
+    for (int m : ringA_) {
+        clippedAt[m] = 1;
+        VertexInfo joined = mesh_.data(m);
+        if (joined.onBorder) continue;
+        joined.role = VertexRole::Boundary;
+        joined.onBorder = true;
+        joined.curve = info.curve;
+        mesh_.setData(m, joined);
+    }
+    --componentVertices_[info.component];
+    mesh_.killVertex(tip);
+    ++counts_.collapses;
+    return true;
 }
 
 LocalRemeshResult Remesher::takeResult()

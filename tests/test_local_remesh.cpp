@@ -143,6 +143,45 @@ void printFigures(const LocalRemeshResult& result, const TriMesh& surface)
                 quality.v6Pct, surfaceArea(result.mesh) / surfaceArea(surface));
 }
 
+//! Each triangle of `mesh` split into four at its edges' midpoints, `levels` times.
+TriMesh subdivided(TriMesh mesh, int levels)
+{
+    for (int level = 0; level < levels; ++level) {
+        std::map<std::pair<int, int>, int> middle;
+        auto at = [&](int a, int b) {
+            const auto [it, added] = middle.try_emplace(std::minmax(a, b), mesh.vertexCount());
+            if (added) mesh.vertices.push_back(0.5 * (mesh.vertices[a] + mesh.vertices[b]));
+            return it->second;
+        };
+        std::vector<Face> faces;
+        for (const Face& f : mesh.faces) {
+            const int ab = at(f[0], f[1]), bc = at(f[1], f[2]), ca = at(f[2], f[0]);
+            faces.insert(faces.end(), {Face{f[0], ab, ca}, Face{ab, f[1], bc}, Face{ca, bc, f[2]}, Face{ab, bc, ca}});
+        }
+        mesh.faces = std::move(faces);
+    }
+    return mesh;
+}
+
+//! A flat 6 x 6 square whose top border has a spike `height` high and `base` wide in the middle
+//! (a scan's ragged border): a fan from the square's centre, subdivided to edges under half
+//! the target.
+TriMesh spikedSquare(double height, double base)
+{
+    TriMesh m;
+    m.vertices = {{3, 3, 0}, {0, 0, 0}, {6, 0, 0}, {6, 6, 0}, {3 + 0.5 * base, 6, 0}, {3, 6 + height, 0}, {3 - 0.5 * base, 6, 0}, {0, 6, 0}};
+    for (int k = 1; k <= 7; ++k) m.faces.push_back({0, k, k % 7 + 1});
+    return subdivided(m, 4);
+}
+
+//! Whether some vertex of `mesh` is within 1e-9 of p.
+bool hasVertexAt(const TriMesh& mesh, const Vec3& p)
+{
+    for (const Vec3& v : mesh.vertices)
+        if ((v - p).norm() < 1e-9) return true;
+    return false;
+}
+
 }  // namespace
 
 TEST(LocalRemesh, ThinBarGridKeepsItsTwentyHandles)
@@ -217,6 +256,38 @@ TEST(LocalRemesh, ThinBoxRimGetsWellShapedTrianglesFromTheStripSizing)
     EXPECT_LT(refined.mesh.vertexCount(), 3 * flat.mesh.vertexCount());
     printFigures(flat, surface);
     printFigures(refined, surface);
+}
+
+TEST(LocalRemesh, BorderSpikeUnderFifteenDegreesLosesOneEarAtMost)
+{
+    // A spike of the border, one target high: at a 10.3° tip every triangle there has an angle of
+    // at most 10.3°, so its ear is cut off (issue 52 item 4: no angle under 15°); at 20° it
+    // stays. The spike's tip and base are corners, as sharp turns of a scan's ragged border are:
+    // no collapse or smoothing moves them. The square keeps its one loop and its vertices stay
+    // on the input.
+    const std::vector<int> corners = {1, 2, 3, 4, 5, 6, 7};
+    auto spike = [](double height, double tipDegrees) {
+        return spikedSquare(height, 2 * height * std::tan(0.5 * tipDegrees * kPi / 180));
+    };
+    const TriMesh sharp = spike(kTarget, 10.3), blunt = spike(kTarget, 20);
+    const LocalRemeshResult cut = remeshAll(sharp, {}, {}, corners), kept = remeshAll(blunt, {}, {}, corners);
+    for (const LocalRemeshResult* result : {&cut, &kept}) {
+        expectSameTopology(*result, computeTopology(sharp));
+        EXPECT_EQ(computeTopology(result->mesh).boundaryLoops, 1);
+    }
+    EXPECT_FALSE(hasVertexAt(cut.mesh, Vec3(3, 6 + kTarget, 0)));
+    EXPECT_TRUE(hasVertexAt(kept.mesh, Vec3(3, 6 + kTarget, 0)));
+    EXPECT_LT(largestDistance(cut.mesh, sharp), 1e-6);
+    EXPECT_GT(surfaceArea(cut.mesh), 0.995 * 36);
+    // Three targets high, the spike loses its tip's ear and no more: what is left of it reaches
+    // within 1.5 targets of the tip.
+    const TriMesh tall = spike(3 * kTarget, 10.3);
+    const LocalRemeshResult shortened = remeshAll(tall, {}, {}, {1, 2, 3, 5, 7});
+    expectSameTopology(shortened, computeTopology(tall));
+    double highest = 0;
+    for (const Vec3& p : shortened.mesh.vertices) highest = std::max(highest, p.y());
+    EXPECT_LT(highest, 6 + 3 * kTarget - 1e-6);
+    EXPECT_GT(highest, 6 + 1.5 * kTarget);
 }
 
 TEST(LocalRemesh, HundredTinyShellsStayHundredSpheres)
