@@ -9,8 +9,10 @@ vertices split one per fan as the repair does) as exactly one output shell, with
 welded_vertices, within its weld_distance) are welded first: they are no holes. Holes FCVT closes by design (under 2 edge lengths across; the report
 or its warning counts them) may be missing from the loops, no more. The output is manifold.
 Companion of check_realworld_topology.py (issue 32's thin parts, where they hold already).
+`--options "..."` first adds those options to every run: `--feature-angle 45` (item 5, what a
+CAD user turns on).
 
-  check_realworld_topology_all.py FCVT REALWORLD_DIR WORKDIR NAME[:N[,N...]] ...
+  check_realworld_topology_all.py FCVT REALWORLD_DIR WORKDIR [--options "OPT ..."] NAME[:N[,N...]] ...
 """
 import json
 import os
@@ -34,6 +36,9 @@ def budgets(fcvt, path):
 
 def main():
     fcvt, directory, work, cases = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+    options = []
+    if cases[:1] == ["--options"]:
+        options, cases = cases[1].split(), cases[2:]
     os.makedirs(work, exist_ok=True)
     for case in cases:
         name, _, given = case.partition(":")
@@ -43,11 +48,11 @@ def main():
             ns = [int(x) for x in given.split(",")]
         inp = tc.read_mesh(path)
         for n in ns:
-            label = f"{name} at {n} vertices (V = {v})"
+            label = f"{name} at {n} vertices (V = {v})" + "".join(" " + o for o in options)
             out = os.path.join(work, f"{name}.{n}.ply")
             report = out + ".json"
             start = time.perf_counter()
-            run = subprocess.run([fcvt, "remesh", path, out, "--vertices", str(n), "--report", report],
+            run = subprocess.run([fcvt, "remesh", path, out, "--vertices", str(n), "--report", report] + options,
                                  capture_output=True, text=True, timeout=600)
             seconds = time.perf_counter() - start
             if not check(run.returncode == 0, f"{label}: exit {run.returncode}: {run.stderr.strip()[-300:]}"):
