@@ -221,6 +221,50 @@ std::vector<Face> weldVertices(const TriMesh& input, std::vector<Vec3>& pos, con
     return faces;
 }
 
+//! A face repeated (same corners, either orientation) whose copies are the only faces on two of
+//! its edges hangs from its third edge as a flap with nothing on either side: no surface. Keeping
+//! one copy leaves that edge with three faces, which the split into manifold sheets turns into a
+//! slit in a closed part (conrod.stl's three, opened as boundary loops once the sampling is fine
+//! enough). Every copy of such a face goes. `keyed` is sorted by corner set; `keep` marks the
+//! first face of each set.
+template <class Keyed>
+void removeDoubledFlaps(const std::vector<Keyed>& keyed, std::vector<char>& keep, RepairReport& report)
+{
+    using Edge = std::pair<int, int>;
+    auto edgesOf = [](const std::array<int, 3>& c) {  // c sorted
+        return std::array<Edge, 3>{Edge{c[0], c[1]}, Edge{c[1], c[2]}, Edge{c[0], c[2]}};
+    };
+    // The repeated corner sets (first index and count in `keyed`) and their edges.
+    std::vector<std::pair<size_t, size_t>> groups;
+    std::vector<Edge> watched;
+    for (size_t i = 0; i < keyed.size();) {
+        size_t j = i + 1;
+        while (j < keyed.size() && keyed[j].corners == keyed[i].corners) ++j;
+        if (j - i >= 2) {
+            groups.push_back({i, j - i});
+            for (const Edge& e : edgesOf(keyed[i].corners)) watched.push_back(e);
+        }
+        i = j;
+    }
+    if (groups.empty()) return;
+    std::sort(watched.begin(), watched.end());
+    watched.erase(std::unique(watched.begin(), watched.end()), watched.end());
+    std::vector<int> uses(watched.size(), 0);
+    for (const Keyed& k : keyed)
+        for (const Edge& e : edgesOf(k.corners)) {
+            const auto it = std::lower_bound(watched.begin(), watched.end(), e);
+            if (it != watched.end() && *it == e) ++uses[size_t(it - watched.begin())];
+        }
+    for (const auto& [first, count] : groups) {
+        int own = 0;  // edges no face outside the group uses
+        for (const Edge& e : edgesOf(keyed[first].corners))
+            own += uses[size_t(std::lower_bound(watched.begin(), watched.end(), e) - watched.begin())] == int(count);
+        if (own != 2) continue;  // 3: a lone doubled triangle, kept once as before
+        keep[size_t(keyed[first].face)] = 0;
+        ++report.removedFlapFaces;
+    }
+}
+
 //! Step 2: degenerate, duplicate and opposite faces removed. A face whose corner set an earlier
 //! face has is dropped: found by sorting (corner set, face) pairs, not a hash map of millions of
 //! triples; the first face of each set is kept, the rest compared with it.
@@ -260,6 +304,7 @@ void removeBadFaces(const std::vector<Vec3>& pos, std::vector<Face>& faces, Repa
         else
             ++report.removedOppositeFaces;
     }
+    removeDoubledFlaps(keyed, keep, report);
     std::vector<Face> kept;
     kept.reserve(keyed.size());
     for (size_t f = 0; f < faces.size(); ++f)
@@ -499,6 +544,7 @@ void describeRepair(const RepairParams& params, RepairReport& report)
     note(report.removedDegenerateFaces, "degenerate faces removed (repeated corner or no area)");
     note(report.removedDuplicateFaces, "duplicate faces removed (same corners, same orientation)");
     note(report.removedOppositeFaces, "opposite duplicate faces removed (same corners, reversed)");
+    note(report.removedFlapFaces, "doubled faces hanging from one edge removed with their copies (flaps, no surface)");
     note(report.nonManifoldEdges, "non-manifold edges (more than two faces) split into manifold sheets");
     if (report.nonOrientableComponents > 0)
         note(report.nonOrientableComponents, "non-orientable components cut along a seam of " + std::to_string(report.seamEdges) +

@@ -42,6 +42,7 @@ struct RepairReport {
     int removedDegenerateFaces = 0;   //!< repeated corner (also after welding) or zero area
     int removedDuplicateFaces = 0;    //!< same corners, same orientation as an earlier face
     int removedOppositeFaces = 0;     //!< same corners, opposite orientation
+    int removedFlapFaces = 0;         //!< doubled faces hanging from one edge: their last copy too
     int nonManifoldEdges = 0;         //!< edges with more than two faces, split
     int nonOrientableComponents = 0;  //!< components cut so that each piece is orientable
     int seamEdges = 0;                //!< edges cut for that

@@ -86,6 +86,7 @@ nlohmann::ordered_json repairJson(bool enabled, const RepairReport& r)
             {"removed_degenerate_faces", r.removedDegenerateFaces},
             {"removed_duplicate_faces", r.removedDuplicateFaces},
             {"removed_opposite_faces", r.removedOppositeFaces},
+            {"removed_flap_faces", r.removedFlapFaces},
             {"non_manifold_edges", r.nonManifoldEdges},
             {"non_orientable_components", r.nonOrientableComponents},
             {"seam_edges", r.seamEdges},

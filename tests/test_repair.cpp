@@ -125,6 +125,35 @@ TEST(Repair, SphereWithAFinKeepsTheSphereClosed)
     EXPECT_EQ(r.topology.boundaryLoops, 1);  // the fin's; the sphere stays closed
 }
 
+TEST(Repair, DoubledFlapOnASphereIsRemovedAndTheSphereStaysClosed)
+{
+    // A triangle stored twice hanging from one edge of a sphere (conrod.stl has three): nothing
+    // on either side of it. Kept once, it made that edge non-manifold, and the split into sheets
+    // could open a slit in the sphere. Both orientations of the copy; a doubled triangle on its
+    // own (a tiny part, not a flap) keeps one copy.
+    for (bool opposite : {false, true}) {
+        const TriMesh sphere = testmesh::icosphere(1);
+        TriMesh m = sphere;
+        const int a = m.faces[0][0], b = m.faces[0][1];
+        m.vertices.push_back(1.5 * m.vertices[a]);
+        const int tip = m.vertexCount() - 1;
+        m.faces.push_back({a, b, tip});
+        m.faces.push_back(opposite ? Face{b, a, tip} : Face{a, b, tip});
+        TriMesh lone;
+        lone.vertices = {{3, 0, 0}, {3.5, 0, 0}, {3, 0.5, 0}};
+        lone.faces = {{0, 1, 2}, {0, 1, 2}};
+        append(m, lone);
+        const Repaired r = repairOf(m);
+        EXPECT_EQ(r.repair.removedFlapFaces, 1);
+        EXPECT_EQ(r.repair.removedDuplicateFaces + r.repair.removedOppositeFaces, 2);
+        EXPECT_EQ(r.repair.nonManifoldEdges, 0);
+        EXPECT_EQ(r.mesh.faceCount(), sphere.faceCount() + 1);
+        EXPECT_EQ(r.topology.components, 2);
+        EXPECT_EQ(r.topology.boundaryLoops, 1);  // the lone triangle's; the sphere stays closed
+        EXPECT_EQ(r.topology.genus, 0);
+    }
+}
+
 TEST(Repair, TwoShellsSharingAnEdgeStayTwoClosedShells)
 {
     // Two tetrahedra touching along the edge (0,0,0)-(0,0,1), on either side of it.
