@@ -31,7 +31,7 @@ nlohmann::ordered_json valenceJson(bool enabled, const ValenceStats& stats);
 
 //! "enabled" and, when enabled, one count per repair step (repair.h: "merged_duplicate_vertices",
 //! "welded_vertices", "weld_distance", "t_junctions", "removed_duplicate_faces",
-//! "removed_opposite_faces", "non_manifold_edges", "non_orientable_components", "seam_edges",
+//! "removed_opposite_faces", "removed_flap_faces", "non_manifold_edges", "non_orientable_components", "seam_edges",
 //! "split_vertices", "dropped_components", "dropped_area_fraction", ...).
 nlohmann::ordered_json repairJson(bool enabled, const RepairReport& repair);
 
