@@ -169,7 +169,8 @@ TriMesh subdivided(TriMesh mesh, int levels)
 TriMesh spikedSquare(double height, double base)
 {
     TriMesh m;
-    m.vertices = {{3, 3, 0}, {0, 0, 0}, {6, 0, 0}, {6, 6, 0}, {3 + 0.5 * base, 6, 0}, {3, 6 + height, 0}, {3 - 0.5 * base, 6, 0}, {0, 6, 0}};
+    m.vertices = {{3, 3, 0}, {0, 0, 0}, {6, 0, 0}, {6, 6, 0}, {3 + 0.5 * base, 6, 0}, {3, 6 + height, 0}, {3 - 0.5 * base, 6, 0},
+                  {0, 6, 0}};
     for (int k = 1; k <= 7; ++k) m.faces.push_back({0, k, k % 7 + 1});
     return subdivided(m, 4);
 }
