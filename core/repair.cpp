@@ -249,16 +249,17 @@ void removeDoubledFlaps(const std::vector<Keyed>& keyed, std::vector<char>& keep
     if (groups.empty()) return;
     std::sort(watched.begin(), watched.end());
     watched.erase(std::unique(watched.begin(), watched.end()), watched.end());
+    auto watchedIndex = [&](const Edge& e) {  // -1 if not watched
+        const auto it = std::lower_bound(watched.begin(), watched.end(), e);
+        return it != watched.end() && *it == e ? static_cast<int>(it - watched.begin()) : -1;
+    };
     std::vector<int> uses(watched.size(), 0);
     for (const Keyed& k : keyed)
-        for (const Edge& e : edgesOf(k.corners)) {
-            const auto it = std::lower_bound(watched.begin(), watched.end(), e);
-            if (it != watched.end() && *it == e) ++uses[size_t(it - watched.begin())];
-        }
+        for (const Edge& e : edgesOf(k.corners))
+            if (const int i = watchedIndex(e); i >= 0) ++uses[size_t(i)];
     for (const auto& [first, count] : groups) {
         int own = 0;  // edges no face outside the group uses
-        for (const Edge& e : edgesOf(keyed[first].corners))
-            own += uses[size_t(std::lower_bound(watched.begin(), watched.end(), e) - watched.begin())] == int(count);
+        for (const Edge& e : edgesOf(keyed[first].corners)) own += uses[size_t(watchedIndex(e))] == int(count);
         if (own != 2) continue;  // 3: a lone doubled triangle, kept once as before
         keep[size_t(keyed[first].face)] = 0;
         ++report.removedFlapFaces;
