@@ -129,6 +129,8 @@ void checkRemeshParams(const RemeshParams& p, const ParameterNames& names)
     if (p.optimisationFacesCap < 0) throw InvalidInputError("optimisation face cap must be >= 0");
     if (p.simplifyBlockFaces < 0) throw InvalidInputError("simplification block size must be >= 0");
     if (p.distanceSamples < 0) throw InvalidInputError("distance sample count must be >= 0");
+    if (!(p.narrowFeatureStripShare >= 0) || !std::isfinite(p.narrowFeatureStripShare))
+        throw InvalidInputError("the narrow feature strip share must be a finite number >= 0");
     if (p.valence.maxRounds < 0 || p.valence.localSmoothing < 0 || p.valence.relaxIterations < 0 || p.valence.sagRepairRounds < 0)
         throw InvalidInputError("valence optimisation step counts must be >= 0");
     if (p.valence.borderWeight < 1) throw InvalidInputError("valence optimisation border weight must be >= 1");
@@ -158,7 +160,7 @@ RemeshResult remesh(const TriMesh& input, const RemeshParams& params, const Prog
     result.inputWarnings = static_cast<int>(result.warnings.size());
     result.notes = prepared.notes;
     result.repair = std::move(prepared.repair);
-    FeatureLines features = findFeatureLines(prepared, params, result.warnings);
+    FeatureLines features = findFeatureLines(prepared, params, result.warnings, result.notes);
     OptimisationSurface surface = chooseOptimisationSurface(prepared, std::move(features), params, sampleCount, pipeline);
     result.inputTopology = surface.inputTopology;
     result.optimisationFaces = surface.mesh().faceCount();

@@ -3,6 +3,7 @@
 #include "boundary.h"
 #include "density.h"
 #include "errors.h"
+#include "feature_strips.h"
 #include "hole_filling.h"
 #include "lattice.h"
 #include "mesh_check.h"
@@ -194,7 +195,8 @@ PreparedSurface prepareSurface(const TriMesh& input, const RemeshParams& params,
     return prepared;
 }
 
-FeatureLines findFeatureLines(const PreparedSurface& prepared, const RemeshParams& params, std::vector<std::string>& warnings)
+FeatureLines findFeatureLines(const PreparedSurface& prepared, const RemeshParams& params, std::vector<std::string>& warnings,
+                              std::vector<std::string>& notes)
 {
     // On the input: their vertices stay in the coarse surface.
     int ignored = 0;
@@ -202,6 +204,20 @@ FeatureLines findFeatureLines(const PreparedSurface& prepared, const RemeshParam
     FeatureLines features = detectFeatures(prepared.surface, params.featureAngleDegrees, userEdges, &ignored, kCornerSpacing);
     if (ignored > 0)
         warnings.push_back(std::to_string(ignored) + " of the given feature edges are not edges of the mesh and were ignored");
+    if (params.featureAngleDegrees > 0 && params.narrowFeatureStripShare > 0 && !features.edges.empty()) {
+        // Detected lines on strips the edge length cannot resolve are left free; the user's own
+        // feature edges are kept whatever their neighbours.
+        NarrowStripParams strip;
+        strip.widthShare = params.narrowFeatureStripShare;
+        NarrowStrips narrow = findNarrowStrips(prepared.surface, features, kWorkingEdgeLength, strip);
+        if (narrow.dropped > 0) {
+            narrow.kept.insert(narrow.kept.end(), userEdges.begin(), userEdges.end());
+            features = detectFeatures(prepared.surface, 0, narrow.kept, nullptr, kCornerSpacing);
+            notes.push_back(std::to_string(narrow.dropped) + " sharp edges on strips narrower than " +
+                            std::to_string(params.narrowFeatureStripShare).substr(0, 4) +
+                            " edge lengths were not kept as feature lines (their strips are cut like a smooth surface)");
+        }
+    }
     return features;
 }
 

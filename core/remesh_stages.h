@@ -185,8 +185,10 @@ struct PassResult {
 //! its small holes closed (hole_filling.h).
 PreparedSurface prepareSurface(const TriMesh& input, const RemeshParams& params, int sampleCount, Pipeline& pipeline);
 //! Sharp edges by dihedral angle and the user's feature edges (feature_lines.h), with a warning
-//! in `warnings` for user edges that are no edges of the mesh.
-FeatureLines findFeatureLines(const PreparedSurface& prepared, const RemeshParams& params, std::vector<std::string>& warnings);
+//! in `warnings` for user edges that are no edges of the mesh. Sharp edges on strips narrower than
+//! params.narrowFeatureStripShare edge lengths are left out (feature_strips.h), said in `notes`.
+FeatureLines findFeatureLines(const PreparedSurface& prepared, const RemeshParams& params, std::vector<std::string>& warnings,
+                              std::vector<std::string>& notes);
 //! The surface the optimisation runs on: a coarser copy (simplify.h) when the input has many
 //! more faces than RemeshParams::optimisationFacesPerSample per sample; also the input's topology.
 OptimisationSurface chooseOptimisationSurface(const PreparedSurface& prepared, FeatureLines features, const RemeshParams& params,

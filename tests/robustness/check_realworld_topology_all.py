@@ -10,9 +10,12 @@ welded_vertices, within its weld_distance) are welded first: they are no holes. 
 or its warning counts them) may be missing from the loops, no more. The output is manifold.
 Companion of check_realworld_topology.py (issue 32's thin parts, where they hold already).
 `--options "..."` first adds those options to every run: `--feature-angle 45` (item 5, what a
-CAD user turns on).
+CAD user turns on). `--triangles K` also asks issue 32's triangle bars (item 4: no angle under 15
+degrees, at most 0.5 % of the triangles with an angle under 30, `fcvt metrics OUT --json`) on at
+least K of the runs, and prints each run's figures.
 
-  check_realworld_topology_all.py FCVT REALWORLD_DIR WORKDIR [--options "OPT ..."] NAME[:N[,N...]] ...
+  check_realworld_topology_all.py FCVT REALWORLD_DIR WORKDIR [--options "OPT ..."] [--triangles K]
+                                  NAME[:N[,N...]] ...
 """
 import json
 import os
@@ -39,6 +42,10 @@ def main():
     options = []
     if cases[:1] == ["--options"]:
         options, cases = cases[1].split(), cases[2:]
+    triangles = None  # runs that must meet the triangle bars
+    if cases[:1] == ["--triangles"]:
+        triangles, cases = int(cases[1]), cases[2:]
+    runs = held = 0
     os.makedirs(work, exist_ok=True)
     for case in cases:
         name, _, given = case.partition(":")
@@ -73,6 +80,16 @@ def main():
             if len(result["problems"]) > 6:
                 check(False, f"{label}: ... and {len(result['problems']) - 6} more topology problems")
             check(r["output"]["manifold"], f"{label}: the output is not manifold")
+            if triangles is not None:
+                m = json.loads(subprocess.run([fcvt, "metrics", out, "--json"], capture_output=True, text=True,
+                                              check=True).stdout)
+                meets = m["theta_min"] >= 15 and m["pct_lt30"] <= 0.5
+                runs, held = runs + 1, held + meets
+                print(f"{label}: theta_min {m['theta_min']:.1f}, {m['pct_lt30']:.2f} % under 30: "
+                      f"{'meets' if meets else 'misses'} the triangle bars", flush=True)
+    if triangles is not None:
+        print(f"triangle bars met on {held} of {runs} runs (asked: {triangles})")
+        check(held >= triangles, f"the triangle bars hold on {held} of {runs} runs, fewer than {triangles}")
     finish()
 
 
