@@ -43,8 +43,9 @@ PLAN = {
 
 
 # The runs in which some shell is remeshed by local operations (the triangulation alone loses it).
-LOCAL = {"plate_with_holes at 300 --feature-angle 45", "plate_with_holes at 1000 --feature-angle 45",
-         "chair at 300 --feature-angle 45", "chair at 1000 --feature-angle 45", "thin_handle_torus at 300",
+# Since feature lines on strips under 0.75 edge lengths are left free (core/feature_strips.h), the
+# plate at 1000 and the chair with features keep their shells without it (and meet the bars).
+LOCAL = {"plate_with_holes at 300 --feature-angle 45", "thin_handle_torus at 300",
          "thin_handle_torus at 1000", "thin_handle_torus at 1000 --feature-angle 45"}
 
 
