@@ -1,6 +1,7 @@
 #include "feature_strips.h"
 
 #include "boundary.h"
+#include "mesh_edges.h"
 #include "point_tree.h"
 
 #include <algorithm>
@@ -119,15 +120,21 @@ NarrowStrips findNarrowStrips(const TriMesh& surface, const FeatureLines& lines,
                               const NarrowStripParams& params)
 {
     NarrowStrips out;
-    const std::vector<std::array<int, 2>>& edges = lines.edges;
     const double width = params.widthShare * edgeLength;
-    if (edges.size() < 2 || !(width > 0)) {
-        out.kept = edges;
+    if (lines.edges.empty() || !(width > 0)) {
+        out.kept = lines.edges;
         return out;
     }
+    // The feature edges first, then the open border's: a line beside the border makes a strip
+    // too (samples sit on both), but only feature edges can be left out.
+    const int featureCount = static_cast<int>(lines.edges.size());
+    std::vector<std::array<int, 2>> edges = lines.edges;
+    const EdgeTable table = buildEdgeTable(surface);
+    for (int e = 0; e < table.edgeCount(); ++e)
+        if (table.isBorder(e)) edges.push_back(table.ends[e]);
     auto segmentOf = [&](int e) { return Segment{surface.vertices[size_t(edges[e][0])], surface.vertices[size_t(edges[e][1])]}; };
 
-    // Points along every feature edge, an eighth of the width apart at most.
+    // Points along every edge, an eighth of the width apart at most.
     std::vector<Vec3> samples;
     std::vector<int> ofSample, firstSample(edges.size() + 1, 0);
     for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
@@ -170,10 +177,11 @@ NarrowStrips findNarrowStrips(const TriMesh& surface, const FeatureLines& lines,
         }
         return false;
     };
-    const std::vector<char> nearWedge = edgesNearWedges(surface, edges, graph, params, params.wedgeReach * width);
+    const std::vector<char> nearWedge =
+        edgesNearWedges(surface, lines.edges, FeatureGraph(lines.edges), params, params.wedgeReach * width);
     std::vector<std::pair<double, uint32_t>> found;
     std::vector<int> seen;
-    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    for (int e = 0; e < featureCount; ++e) {
         bool narrow = false;
         if (nearWedge[size_t(e)]) {
             out.kept.push_back(edges[e]);

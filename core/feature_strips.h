@@ -38,8 +38,8 @@ struct NarrowStrips {
 };
 
 //! The feature edges of `lines` (edges of `surface`, as FeatureLines::edges) split into those with
-//! another feature line beside them closer than params.widthShare × `edgeLength` (left out, unless
-//! near a wedge's apex) and the others. Deterministic, independent of the thread count.
+//! another feature line or the open border beside them closer than params.widthShare × `edgeLength`
+//! (left out, unless near a wedge's apex) and the others. Deterministic, independent of the thread count.
 NarrowStrips findNarrowStrips(const TriMesh& surface, const FeatureLines& lines, double edgeLength,
                               const NarrowStripParams& params = {});
 

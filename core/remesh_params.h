@@ -87,11 +87,11 @@ struct RemeshParams {
     double featureAngleDegrees = 0;
     //! Feature edges chosen by the user (input vertex index pairs, e.g. MeshLab's selection), besides.
     std::vector<std::array<int, 2>> featureEdges;
-    //! Sharp edges (by featureAngleDegrees) with another sharp edge beside them closer than this
-    //! many edge lengths are not kept as feature lines: no triangle can span such a strip and keep
-    //! both lines without a sliver (feature_strips.h). 0 keeps them all; >= 0. At 0.75 the
-    //! real-world meshes and fandisk with --feature-angle 45 meet issue 52's triangle bars on 9 of
-    //! 17 runs, against 2 with every line kept (docs/measurements.md, "Narrow feature strips").
+    //! Sharp edges (by featureAngleDegrees) with another sharp edge or the open border beside them
+    //! closer than this many edge lengths are not kept as feature lines: no triangle can span such
+    //! a strip and keep both sides without a sliver (feature_strips.h). 0 keeps them all; >= 0. At
+    //! 0.75 the real-world meshes and fandisk with --feature-angle 45 meet issue 52's triangle bars
+    //! on 10 of 17 runs, against 2 with every line kept (docs/measurements.md, "Narrow feature strips").
     double narrowFeatureStripShare = 0.75;
     DensitySource density = DensitySource::Uniform;  //!< the sample density ρ (eq. 1)
     //! DensitySource::Curvature: how strongly curvature raises μ; finite, >= 0 (0 = uniform). μ = (1 +

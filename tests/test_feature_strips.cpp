@@ -1,6 +1,7 @@
 // Feature lines on strips narrower than the edge length (core/feature_strips.h): a thin plate's
-// rims and a small hole's rim are left to the free optimisation, wider strips and one line
-// bending round are kept, and the end-to-end gain on the plate with sharp features on.
+// rims, a small hole's rim and a crease beside the open border are left to the free optimisation;
+// wider strips, one line bending round and a wedge are kept; the end-to-end gain on the plate
+// with sharp features on.
 #include "feature_strips.h"
 #include "metrics.h"
 #include "remesh.h"
@@ -74,6 +75,36 @@ TEST(FeatureStrips, SmallHoleRimIsDroppedALineBendingRoundIsKept)
     NarrowStripParams off;
     off.widthShare = 0;
     EXPECT_EQ(findNarrowStrips(smallRim, smallLines, kLength, off).kept.size(), 24u);
+}
+
+TEST(FeatureStrips, CreaseBesideTheOpenBorderIsDroppedFarFromItKept)
+{
+    // An open sheet 4 x 4 in 0.1 cells, bent up square along y = 4 - flange: a crease `flange`
+    // from the open border (a sheet-metal flange).
+    auto bentSheet = [](double flange) {
+        TriMesh m;
+        const int n = 40;
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) {
+                const double x = 0.1 * i, y = 0.1 * j, bend = 4.0 - flange;
+                m.vertices.push_back(y <= bend + 1e-9 ? Vec3(x, y, 0) : Vec3(x, bend, y - bend));
+            }
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+                m.faces.push_back({a, b, d});
+                m.faces.push_back({a, d, c});
+            }
+        return m;
+    };
+    const TriMesh narrow = bentSheet(0.3);
+    const FeatureLines narrowLines = detectFeatures(narrow, 45);
+    ASSERT_EQ(narrowLines.edges.size(), 40u);
+    EXPECT_EQ(findNarrowStrips(narrow, narrowLines, kLength).dropped, 40);
+    const TriMesh wide = bentSheet(1.5);
+    const FeatureLines wideLines = detectFeatures(wide, 45);
+    ASSERT_EQ(wideLines.edges.size(), 40u);
+    EXPECT_EQ(findNarrowStrips(wide, wideLines, kLength).dropped, 0);
 }
 
 TEST(FeatureStrips, WedgeIsKeptAFoldIsNot)
