@@ -1,6 +1,7 @@
 #include "feature_strips.h"
 
 #include "boundary.h"
+#include "disjoint_sets.h"
 #include "mesh_edges.h"
 #include "point_tree.h"
 
@@ -49,10 +50,11 @@ bool reachableAlongLines(const TriMesh& surface, const std::vector<std::array<in
     auto at = [&](int v) -> const Vec3& { return surface.vertices[size_t(v)]; };
     for (int end : edges[from]) queue.push({(at(end) - p).norm(), end});
     while (!queue.empty()) {
-        const auto [distance, v] = queue.top();
+        const double distance = queue.top().first;
+        const int v = queue.top().second;
         queue.pop();
         if (distance > limit) break;
-        if (std::any_of(settled.begin(), settled.end(), [v = v](const Entry& s) { return s.second == v; })) continue;
+        if (std::any_of(settled.begin(), settled.end(), [v](const Entry& s) { return s.second == v; })) continue;
         settled.push_back({distance, v});
         if (v == edges[to][0] || v == edges[to][1]) {
             if (distance + (q - at(v)).norm() <= limit) return true;
@@ -98,7 +100,8 @@ std::vector<char> edgesNearWedges(const TriMesh& surface, const std::vector<std:
     std::vector<double> distance(ends.size(), std::numeric_limits<double>::infinity());
     auto slot = [&](int v) { return static_cast<size_t>(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin()); };
     while (!queue.empty()) {
-        const auto [d, v] = queue.top();
+        const double d = queue.top().first;
+        const int v = queue.top().second;
         queue.pop();
         double& best = distance[slot(v)];
         if (d >= best || d > reach) continue;
@@ -112,6 +115,27 @@ std::vector<char> edgesNearWedges(const TriMesh& surface, const std::vector<std:
     for (size_t e = 0; e < edges.size(); ++e)
         near[e] = distance[slot(edges[e][0])] <= reach || distance[slot(edges[e][1])] <= reach;
     return near;
+}
+
+//! Leaves out the connected pieces of out.kept shorter than `shortest` in all: a slot's rounded
+//! ends once its sides went, a scan's noise. Both ends of such a piece would be corners (fixed
+//! samples) closer than an edge.
+void dropFragments(const TriMesh& surface, double shortest, NarrowStrips& out)
+{
+    if (!(shortest > 0) || out.kept.empty()) return;
+    DisjointSets pieces(surface.vertexCount());
+    for (const auto& [a, b] : out.kept) pieces.unite(a, b);
+    std::vector<double> length(surface.vertices.size(), 0.0);  // per piece, at its root
+    for (const auto& [a, b] : out.kept)
+        length[size_t(pieces.find(a))] += (surface.vertices[size_t(a)] - surface.vertices[size_t(b)]).norm();
+    std::vector<std::array<int, 2>> kept;
+    for (const auto& edge : out.kept) {
+        if (length[size_t(pieces.find(edge[0]))] < shortest)
+            ++out.dropped;
+        else
+            kept.push_back(edge);
+    }
+    out.kept = std::move(kept);
 }
 
 }  // namespace
@@ -194,6 +218,7 @@ NarrowStrips findNarrowStrips(const TriMesh& surface, const FeatureLines& lines,
         else
             out.kept.push_back(edges[e]);
     }
+    dropFragments(surface, params.fragmentShare * edgeLength, out);
     return out;
 }
 

@@ -30,6 +30,9 @@ struct NarrowStripParams {
     //! turns at a corner the user wants (under wedgeDegrees: a line folding back, no corner).
     double wedgeReach = 3.0;
     double wedgeDegrees = 15.0;
+    //! What is left of a line (a connected piece of the edges kept) shorter than this many edge
+    //! lengths in all is left out too: its two ends, both corners, would be closer than an edge.
+    double fragmentShare = 1.0;
 };
 
 struct NarrowStrips {

@@ -91,7 +91,8 @@ struct RemeshParams {
     //! closer than this many edge lengths are not kept as feature lines: no triangle can span such
     //! a strip and keep both sides without a sliver (feature_strips.h). 0 keeps them all; >= 0. At
     //! 0.75 the real-world meshes and fandisk with --feature-angle 45 meet issue 52's triangle bars
-    //! on 10 of 17 runs, against 2 with every line kept (docs/measurements.md, "Narrow feature strips").
+    //! on 11 of 17 runs, against 2 with every line kept (docs/measurements.md, "Narrow feature
+    //! strips"). Pieces of line left shorter than an edge length go too.
     double narrowFeatureStripShare = 0.75;
     DensitySource density = DensitySource::Uniform;  //!< the sample density ρ (eq. 1)
     //! DensitySource::Curvature: how strongly curvature raises μ; finite, >= 0 (0 = uniform). μ = (1 +

@@ -41,15 +41,22 @@ std::pair<TriMesh, FeatureLines> circleLine(double radius, int pieces)
 
 }  // namespace
 
-TEST(FeatureStrips, ThinPlateRimsAreDroppedItsCornerEdgesKept)
+TEST(FeatureStrips, ThinPlateRimsAreDroppedThenTheirShortCornerEdges)
 {
     const TriMesh plate = scaledBox(12.0, 0.24);  // rims 0.24 wide: under 0.75 of the length
     const FeatureLines lines = detectFeatures(plate, 45);
     ASSERT_EQ(lines.edges.size(), 8u * 8u + 4u);  // 8 rim lines of 8 edges, 4 short corner edges
+    // The rims go; the corner edges across the thickness are left as pieces 0.24 long, shorter
+    // than an edge: they go too.
     const NarrowStrips narrow = findNarrowStrips(plate, lines, kLength);
-    EXPECT_EQ(narrow.dropped, 64);
-    ASSERT_EQ(narrow.kept.size(), 4u);
-    for (const auto& [a, b] : narrow.kept)  // the corner edges across the plate's thickness
+    EXPECT_EQ(narrow.dropped, 68);
+    EXPECT_TRUE(narrow.kept.empty());
+    NarrowStripParams noFragments;
+    noFragments.fragmentShare = 0;
+    const NarrowStrips rimsOnly = findNarrowStrips(plate, lines, kLength, noFragments);
+    EXPECT_EQ(rimsOnly.dropped, 64);
+    ASSERT_EQ(rimsOnly.kept.size(), 4u);
+    for (const auto& [a, b] : rimsOnly.kept)
         EXPECT_NEAR((plate.vertices[size_t(a)] - plate.vertices[size_t(b)]).norm(), 0.24, 1e-9);
     // A shorter length resolves the rims: nothing is dropped.
     const NarrowStrips resolved = findNarrowStrips(plate, lines, 0.24 / 0.8);

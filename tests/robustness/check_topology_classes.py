@@ -44,9 +44,8 @@ PLAN = {
 
 # The runs in which some shell is remeshed by local operations (the triangulation alone loses it).
 # Since feature lines on strips under 0.75 edge lengths are left free (core/feature_strips.h), the
-# plate at 1000 and the chair with features keep their shells without it (and meet the bars).
-LOCAL = {"plate_with_holes at 300 --feature-angle 45", "thin_handle_torus at 300",
-         "thin_handle_torus at 1000", "thin_handle_torus at 1000 --feature-angle 45"}
+# plate and the chair with features keep their shells without it (and meet the bars).
+LOCAL = {"thin_handle_torus at 300", "thin_handle_torus at 1000", "thin_handle_torus at 1000 --feature-angle 45"}
 
 
 def remesh(fcvt, path, out, n, extra):
