@@ -2,7 +2,6 @@
 
 #include "boundary.h"
 #include "disjoint_sets.h"
-#include "mesh_edges.h"
 #include "point_tree.h"
 
 #include <algorithm>
@@ -38,30 +37,43 @@ private:
     std::vector<std::pair<int, int>> incidence_;
 };
 
+using Entry = std::pair<double, int>;  // (distance along the lines, vertex)
+
+//! The bounded Dijkstra's queue and settled vertices, kept from call to call (no allocation per
+//! pair of edges tested).
+struct AlongLinesScratch {
+    std::vector<Entry> heap, settled;  // few vertices: a sorted search is not needed
+};
+
 //! Whether point q of feature edge `to` is within `limit` of point p of feature edge `from`
 //! along the lines (a bounded Dijkstra over the feature graph): then the two are one line
 //! bending, not two lines beside each other.
+
 bool reachableAlongLines(const TriMesh& surface, const std::vector<std::array<int, 2>>& edges, const FeatureGraph& graph,
-                         int from, const Vec3& p, int to, const Vec3& q, double limit)
+                         int from, const Vec3& p, int to, const Vec3& q, double limit, AlongLinesScratch& scratch)
 {
-    using Entry = std::pair<double, int>;  // (distance along the lines, vertex)
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-    std::vector<Entry> settled;  // few vertices: a sorted search is not needed
+    std::vector<Entry>& heap = scratch.heap;  // a min-heap on the distance (std::greater)
+    std::vector<Entry>& settled = scratch.settled;
+    heap.clear();
+    settled.clear();
     auto at = [&](int v) -> const Vec3& { return surface.vertices[size_t(v)]; };
-    for (int end : edges[from]) queue.push({(at(end) - p).norm(), end});
-    while (!queue.empty()) {
-        const double distance = queue.top().first;
-        const int v = queue.top().second;
-        queue.pop();
+    auto push = [&](double distance, int v) {
+        heap.push_back({distance, v});
+        std::push_heap(heap.begin(), heap.end(), std::greater<>());
+    };
+    for (int end : edges[from]) push((at(end) - p).norm(), end);
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+        const double distance = heap.back().first;
+        const int v = heap.back().second;
+        heap.pop_back();
         if (distance > limit) break;
         if (std::any_of(settled.begin(), settled.end(), [v](const Entry& s) { return s.second == v; })) continue;
         settled.push_back({distance, v});
-        if (v == edges[to][0] || v == edges[to][1]) {
-            if (distance + (q - at(v)).norm() <= limit) return true;
-        }
+        if ((v == edges[to][0] || v == edges[to][1]) && distance + (q - at(v)).norm() <= limit) return true;
         graph.forEdgesAt(v, [&](int e) {
             const int next = edges[e][0] == v ? edges[e][1] : edges[e][0];
-            queue.push({distance + (at(next) - at(v)).norm(), next});
+            push(distance + (at(next) - at(v)).norm(), next);
         });
     }
     return false;
@@ -82,8 +94,7 @@ std::vector<char> edgesNearWedges(const TriMesh& surface, const std::vector<std:
     std::sort(ends.begin(), ends.end());
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
     const double foldCos = std::cos(params.wedgeDegrees * kPi / 180);
-    using Entry = std::pair<double, int>;  // (distance along the lines from an apex, vertex)
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;  // from an apex
     std::vector<Vec3> leaving;
     for (int v : ends) {
         leaving.clear();
@@ -153,9 +164,7 @@ NarrowStrips findNarrowStrips(const TriMesh& surface, const FeatureLines& lines,
     // too (samples sit on both), but only feature edges can be left out.
     const int featureCount = static_cast<int>(lines.edges.size());
     std::vector<std::array<int, 2>> edges = lines.edges;
-    const EdgeTable table = buildEdgeTable(surface);
-    for (int e = 0; e < table.edgeCount(); ++e)
-        if (table.isBorder(e)) edges.push_back(table.ends[e]);
+    for (const auto& [a, b] : borderHalfEdges(surface.faces)) edges.push_back({a, b});
     auto segmentOf = [&](int e) { return Segment{surface.vertices[size_t(edges[e][0])], surface.vertices[size_t(edges[e][1])]}; };
 
     // Points along every edge, an eighth of the width apart at most.
@@ -177,6 +186,7 @@ NarrowStrips findNarrowStrips(const TriMesh& surface, const FeatureLines& lines,
 
     // An edge is narrow where one of its points has another line beside it within the width:
     // parallel, straight across, not reached along the lines by a short way round.
+    AlongLinesScratch scratch;
     auto narrowAt = [&](int own, const Vec3& p, std::vector<std::pair<double, uint32_t>>& found, std::vector<int>& seen) {
         found.clear();
         WithinRadius within(width * width, found);
@@ -196,7 +206,7 @@ NarrowStrips findNarrowStrips(const TriMesh& surface, const FeatureLines& lines,
             const double distance = (q - p).norm();
             if (!(distance > 0) || distance >= width) continue;
             if (std::abs((q - p).dot(direction)) > params.acrossCos * distance) continue;
-            if (reachableAlongLines(surface, edges, graph, own, p, other, q, params.alongShare * distance)) continue;
+            if (reachableAlongLines(surface, edges, graph, own, p, other, q, params.alongShare * distance, scratch)) continue;
             return true;
         }
         return false;

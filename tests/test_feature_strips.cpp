@@ -18,13 +18,6 @@ namespace {
 
 constexpr double kLength = 1.0746;  // the working frame's edge length (remesh_stages.h)
 
-TriMesh scaledBox(double size, double thickness)
-{
-    TriMesh m = testmesh::thinBox(8, thickness / size);
-    for (Vec3& v : m.vertices) v *= size;
-    return m;
-}
-
 // A closed polyline of `pieces` edges round a circle of radius `radius` (vertices only: the
 // strips are measured on the lines).
 std::pair<TriMesh, FeatureLines> circleLine(double radius, int pieces)
@@ -43,7 +36,7 @@ std::pair<TriMesh, FeatureLines> circleLine(double radius, int pieces)
 
 TEST(FeatureStrips, ThinPlateRimsAreDroppedThenTheirShortCornerEdges)
 {
-    const TriMesh plate = scaledBox(12.0, 0.24);  // rims 0.24 wide: under 0.75 of the length
+    const TriMesh plate = testmesh::scaledThinBox(12.0, 0.24);  // rims 0.24 wide: under 0.75 of the length
     const FeatureLines lines = detectFeatures(plate, 45);
     ASSERT_EQ(lines.edges.size(), 8u * 8u + 4u);  // 8 rim lines of 8 edges, 4 short corner edges
     // The rims go; the corner edges across the thickness are left as pieces 0.24 long, shorter
@@ -63,7 +56,7 @@ TEST(FeatureStrips, ThinPlateRimsAreDroppedThenTheirShortCornerEdges)
     EXPECT_EQ(resolved.kept, lines.edges);
     EXPECT_EQ(resolved.dropped, 0);
     // Nor on a thick box.
-    const TriMesh box = scaledBox(12.0, 3.0);
+    const TriMesh box = testmesh::scaledThinBox(12.0, 3.0);
     const FeatureLines boxLines = detectFeatures(box, 45);
     EXPECT_EQ(findNarrowStrips(box, boxLines, kLength).kept, boxLines.edges);
 }
@@ -148,7 +141,7 @@ TEST(FeatureStrips, ThinPlateWithSharpFeaturesGetsNoSlivers)
 {
     // A 12 x 0.3 x 12 plate at 400 vertices: edges about 1.4 long, rims 0.3 wide. Its rim lines
     // kept, the samples on both sides of every rim make slivers; left free, none.
-    const TriMesh plate = scaledBox(12.0, 0.3);
+    const TriMesh plate = testmesh::scaledThinBox(12.0, 0.3);
     RemeshParams params;
     params.vertexCount = 400;
     params.featureAngleDegrees = 45;

@@ -151,6 +151,14 @@ inline TriMesh thinBox(int cells, double thickness)
     return m;
 }
 
+//! thinBox(8, thickness / size) scaled by `size`: a size x thickness x size plate.
+inline TriMesh scaledThinBox(double size, double thickness)
+{
+    TriMesh m = thinBox(8, thickness / size);
+    for (Vec3& v : m.vertices) v *= size;
+    return m;
+}
+
 //! Unit icosphere subdivided `levels` times (closed, genus 0, outward orientation).
 inline TriMesh icosphere(int levels)
 {

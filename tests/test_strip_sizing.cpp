@@ -15,18 +15,11 @@ namespace {
 
 constexpr double kLength = 1.0746;
 
-TriMesh scaledBox(double size, double thickness)
-{
-    TriMesh m = testmesh::thinBox(8, thickness / size);
-    for (Vec3& v : m.vertices) v *= size;
-    return m;
-}
-
 }  // namespace
 
 TEST(StripSizing, ThinPlateRimGetsEdgesAsLongAsItIsWide)
 {
-    const TriMesh plate = scaledBox(12.0, 0.24);  // 12 x 0.24 x 12: rims 0.24 wide
+    const TriMesh plate = testmesh::scaledThinBox(12.0, 0.24);  // 12 x 0.24 x 12: rims 0.24 wide
     const StripSizingParams params;
     const StripSizing sizing(plate, std::vector<char>(plate.faces.size(), 1), kLength, params);
     ASSERT_GT(sizing.sources(), 0);
@@ -44,19 +37,19 @@ TEST(StripSizing, ThinPlateRimGetsEdgesAsLongAsItIsWide)
 
 TEST(StripSizing, NoStripNarrowerThanTheLengthLeavesTheLength)
 {
-    const TriMesh cube = scaledBox(10.0, 10.0);  // creases 10 lengths apart
+    const TriMesh cube = testmesh::scaledThinBox(10.0, 10.0);  // creases 10 lengths apart
     const StripSizing sizing(cube, std::vector<char>(cube.faces.size(), 1), kLength);
     EXPECT_EQ(sizing.sources(), 0);
     EXPECT_EQ(sizing.at(Vec3(0.0, 0.0, 0.0)), kLength);
     // Unselected faces count for nothing: the thin plate's rims are not strips then.
-    const TriMesh plate = scaledBox(12.0, 0.24);
+    const TriMesh plate = testmesh::scaledThinBox(12.0, 0.24);
     const StripSizing none(plate, std::vector<char>(plate.faces.size(), 0), kLength);
     EXPECT_EQ(none.sources(), 0);
 }
 
 TEST(StripSizing, NeverSteeperThanTheGradation)
 {
-    const TriMesh plate = scaledBox(12.0, 0.24);
+    const TriMesh plate = testmesh::scaledThinBox(12.0, 0.24);
     const StripSizingParams params;
     const StripSizing sizing(plate, std::vector<char>(plate.faces.size(), 1), kLength, params);
     std::mt19937 random(7);
